@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs every Debian package envdesign needs to build, test and run.
+# Idempotent and non-interactive: packages already present are skipped.
+set -euo pipefail
+
+PACKAGES=(
+    build-essential cmake pkg-config
+    libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev
+    libprotobuf-dev protobuf-compiler
+    libgtest-dev libgmock-dev
+    liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
+    cyclonedds-dev cyclonedds-tools libcycloneddsidl0
+)
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all ${#PACKAGES[@]} packages already installed"
+    exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
