@@ -1,0 +1,57 @@
+// envdesign: the command line. Each subcommand's flags and logic live in its own file;
+// this file only wires them up and maps failures to the exit codes of SPEC.md.
+
+#include "plan_command.h"
+
+#include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+#include <new>
+
+namespace {
+
+void set_up_logging(const std::string &level) {
+    auto logger = spdlog::stderr_color_mt("envdesign");
+    logger->set_pattern("[%H:%M:%S.%e] [%^%l%$] %v");
+    logger->set_level(spdlog::level::from_str(level));
+    spdlog::set_default_logger(logger);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    CLI::App app{"envdesign: environment design for explicable robot behaviour"};
+    app.require_subcommand(1);
+    std::string log_level = "info";
+    app.add_option("--log-level", log_level, "trace|debug|info|warn|error|off")
+        ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
+        ->capture_default_str();
+
+    envdesign::cli::PlanFlags plan_flags;
+    auto *plan = app.add_subcommand("plan", "optimal plan of a PDDL problem (A*)");
+    envdesign::cli::add_plan_flags(*plan, plan_flags);
+    plan->fallthrough();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp &e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError &e) {
+        app.exit(e);
+        return 2;
+    }
+    set_up_logging(log_level);
+    try {
+        if (*plan)
+            return envdesign::cli::run_plan(plan_flags);
+    } catch (const std::bad_alloc &) {
+        spdlog::error("out of memory");
+        return 4;
+    } catch (const std::exception &e) {
+        spdlog::error("{}", e.what());
+        return 1;
+    }
+    return 1;
+}

@@ -1,0 +1,190 @@
+#include "ground/grounder.h"
+
+#include "ground/reachability.h"
+#include "ground/simplify.h"
+
+#include <algorithm>
+#include <map>
+
+namespace envdesign::ground {
+namespace {
+
+void sort_unique(std::vector<FactId> &facts) {
+    std::sort(facts.begin(), facts.end());
+    facts.erase(std::unique(facts.begin(), facts.end()), facts.end());
+}
+
+class TaskBuilder {
+public:
+    TaskBuilder(const pddl::Domain &domain, const pddl::Problem &problem, const Reachability &r)
+        : domain_(domain), problem_(problem), r_(r) {}
+
+    GroundTask build() {
+        for (std::size_t a = 0; a < r_.atoms.size(); ++a) {
+            if (r_.is_fluent[r_.atoms[a][0]]) {
+                fact_of_atom_[static_cast<int>(a)] = task_.num_facts();
+                task_.fact_names.push_back(r_.atom_name(r_.atoms[a]));
+            }
+        }
+        for (const auto &atom : problem_.init)
+            if (auto f = fact_of(key(atom, nullptr)); f >= 0)
+                task_.initial_state.push_back(f);
+        for (const auto &instance : r_.actions)
+            add_operator(instance);
+        add_goal();
+        add_complements();
+        task_.has_action_costs = problem_.minimize_total_cost;
+        sort_unique(task_.initial_state);
+        sort_unique(task_.goal);
+        return std::move(task_);
+    }
+
+private:
+    // The atom with variables replaced by the instance's objects.
+    AtomKey key(const pddl::Atom &atom, const ActionInstance *instance) const {
+        AtomKey result{r_.predicate_id(atom.predicate)};
+        for (const auto &arg : atom.args)
+            result.push_back(arg[0] == '?' ? instance->arguments[parameter_index(instance, arg)]
+                                           : r_.object_id(arg));
+        return result;
+    }
+
+    int parameter_index(const ActionInstance *instance, const std::string &variable) const {
+        const auto &params = domain_.actions[instance->schema].parameters;
+        for (std::size_t i = 0; i < params.size(); ++i)
+            if (params[i].name == variable)
+                return static_cast<int>(i);
+        return -1;
+    }
+
+    // The fact for a fluent atom; -1 if the atom is static or never reached.
+    FactId fact_of(const AtomKey &atom) const {
+        auto it = r_.atom_index.find(atom);
+        if (it == r_.atom_index.end())
+            return -1;
+        auto f = fact_of_atom_.find(it->second);
+        return f == fact_of_atom_.end() ? -1 : f->second;
+    }
+
+    FactId complement_of(FactId f) {
+        auto [it, inserted] = complement_.emplace(f, task_.num_facts());
+        if (inserted)
+            task_.fact_names.push_back("(not " + task_.fact_names[f] + ")");
+        return it->second;
+    }
+
+    Cost cost_of(const pddl::Action &action, const ActionInstance &instance) const {
+        if (!problem_.minimize_total_cost)
+            return 1;
+        long long total = 0;
+        for (const auto &c : action.costs) {
+            total += c.constant;
+            if (!c.function)
+                continue;
+            pddl::Atom term{c.function->predicate, {}, {}};
+            for (const auto &arg : c.function->args)
+                term.args.push_back(arg[0] == '?' ? r_.objects[instance.arguments[parameter_index(&instance, arg)]]
+                                                  : arg);
+            auto value = problem_.function_values.find(term);
+            if (value == problem_.function_values.end())
+                throw pddl::ParseError({problem_.file, 0, 0},
+                                       "the problem gives no value for " + term.to_string() +
+                                           ", the cost of action '" + action.name + "'");
+            total += value->second;
+        }
+        return static_cast<Cost>(total);
+    }
+
+    void add_operator(const ActionInstance &instance) {
+        const pddl::Action &action = domain_.actions[instance.schema];
+        GroundOperator op;
+        op.name = "(" + action.name;
+        for (int o : instance.arguments)
+            op.name += " " + r_.objects[o];
+        op.name += ")";
+        for (const auto &l : action.precondition) {
+            if (l.atom.predicate == "=")
+                continue;  // checked during exploration
+            FactId f = fact_of(key(l.atom, &instance));
+            if (f >= 0)
+                op.pre.push_back(l.negated ? complement_of(f) : f);
+        }
+        for (const auto &l : action.effect) {
+            FactId f = fact_of(key(l.atom, &instance));
+            if (f >= 0)
+                (l.negated ? op.del : op.add).push_back(f);
+        }
+        op.cost = cost_of(action, instance);
+        sort_unique(op.pre);
+        sort_unique(op.add);
+        sort_unique(op.del);
+        std::erase_if(op.del, [&](FactId f) { return std::binary_search(op.add.begin(), op.add.end(), f); });
+        task_.operators.push_back(std::move(op));
+    }
+
+    void add_goal() {
+        bool unreachable = false;
+        for (const auto &l : problem_.goal) {
+            AtomKey atom = key(l.atom, nullptr);
+            bool fluent = r_.is_fluent[atom[0]];
+            bool reached = r_.is_reached(atom);
+            if (fluent && reached)
+                task_.goal.push_back(l.negated ? complement_of(fact_of(atom)) : fact_of(atom));
+            else if (l.negated == reached)  // static and false, or never reachable
+                unreachable = true;
+        }
+        if (unreachable) {
+            task_.goal.push_back(task_.num_facts());
+            task_.fact_names.push_back("(goal-unreachable-by-grounding)");
+        }
+    }
+
+    // Operators that change a fact also change its complement, the other way round.
+    void add_complements() {
+        std::vector<bool> initially(task_.num_facts(), false);
+        for (FactId f : task_.initial_state)
+            initially[f] = true;
+        for (auto [fact, complement] : complement_) {
+            if (!initially[fact])
+                task_.initial_state.push_back(complement);
+            for (auto &op : task_.operators) {
+                if (std::binary_search(op.add.begin(), op.add.end(), fact))
+                    op.del.push_back(complement);
+                else if (std::binary_search(op.del.begin(), op.del.end(), fact))
+                    op.add.push_back(complement);
+            }
+        }
+        for (auto &op : task_.operators) {
+            sort_unique(op.add);
+            sort_unique(op.del);
+        }
+    }
+
+    const pddl::Domain &domain_;
+    const pddl::Problem &problem_;
+    const Reachability &r_;
+    GroundTask task_;
+    std::map<int, FactId> fact_of_atom_;
+    std::map<FactId, FactId> complement_;
+};
+
+}  // namespace
+
+GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
+                  GroundingStatistics *statistics) {
+    Reachability reachability = explore(domain, problem);
+    GroundTask task = TaskBuilder(domain, problem, reachability).build();
+    if (statistics) {
+        statistics->reachable_atoms = static_cast<int>(reachability.atoms.size());
+        statistics->reachable_actions = static_cast<int>(reachability.actions.size());
+    }
+    remove_unreachable(task);
+    remove_irrelevant(task);
+    if (statistics) {
+        statistics->relevant_facts = task.num_facts();
+        statistics->relevant_operators = task.num_operators();
+    }
+    return task;
+}
+
+}  // namespace envdesign::ground

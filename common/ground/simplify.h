@@ -1,0 +1,18 @@
+#pragma once
+// Exact simplifications of a GroundTask that keep every optimal plan.
+
+#include "ground/ground_task.h"
+
+namespace envdesign::ground {
+
+// Drops operators not reachable in the delete relaxation from the initial state, and the
+// facts that then never become true. Needed after negative preconditions were compiled into
+// complementary facts, which the lifted exploration did not see.
+void remove_unreachable(GroundTask &task);
+
+// Drops facts that no goal needs, directly or through the preconditions of an operator that
+// changes a needed fact, and the operators left without effects. Operators kept keep all
+// their preconditions, so a plan of the smaller task is a plan of the original.
+void remove_irrelevant(GroundTask &task);
+
+}  // namespace envdesign::ground

@@ -1,0 +1,181 @@
+#include "pddl/name_scope.h"
+#include "pddl/parser.h"
+
+#include <set>
+
+namespace envdesign::pddl {
+namespace {
+
+const std::set<std::string> SUPPORTED_REQUIREMENTS = {
+    ":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs"};
+const std::set<std::string> UNSUPPORTED_REQUIREMENTS = {
+    ":adl", ":disjunctive-preconditions", ":existential-preconditions",
+    ":universal-preconditions", ":quantified-preconditions", ":conditional-effects",
+    ":fluents", ":numeric-fluents", ":object-fluents", ":durative-actions",
+    ":duration-inequalities", ":continuous-effects", ":derived-predicates",
+    ":timed-initial-literals", ":preferences", ":constraints"};
+
+void parse_requirements(const SExpr &section, Domain &domain) {
+    for (std::size_t i = 1; i < section.items.size(); ++i) {
+        const SExpr &r = section.items[i];
+        if (r.is_list)
+            throw ParseError(r.location, "expected a requirement like ':strips'");
+        if (UNSUPPORTED_REQUIREMENTS.count(r.symbol))
+            throw ParseError(r.location, "requirement '" + r.symbol + "' is not supported");
+        if (!SUPPORTED_REQUIREMENTS.count(r.symbol))
+            throw ParseError(r.location, "unknown requirement '" + r.symbol + "'");
+        domain.requirements.insert(r.symbol);
+    }
+}
+
+void parse_types(const SExpr &section, Domain &domain) {
+    // Types are declared in any order, so the names come first and parents are checked after.
+    auto declared = parse_typed_list(section.items, 1, "type", nullptr);
+    for (const auto &t : declared) {
+        if (t.types.size() != 1)
+            throw ParseError(t.location, "a type's parent cannot be an 'either' type");
+        if (domain.type_parent.count(t.name))
+            throw ParseError(t.location, "duplicate type '" + t.name + "'");
+        domain.type_parent[t.name] = t.types[0];
+    }
+    for (const auto &t : declared) {
+        const std::string &parent = t.types[0];
+        if (parent != "object" && !domain.type_parent.count(parent))
+            throw ParseError(t.location, "undefined type '" + parent + "'");
+    }
+    domain.type_parent.erase("object");
+}
+
+std::vector<Predicate> parse_signatures(const SExpr &section, const Domain &domain,
+                                        const std::string &kind) {
+    std::vector<Predicate> result;
+    std::set<std::string> seen;
+    for (std::size_t i = 1; i < section.items.size(); ++i) {
+        const SExpr &p = section.items[i];
+        if (p.is_symbol("-")) {  // a function's result type: "- number"
+            ++i;
+            continue;
+        }
+        if (!p.is_list || p.items.empty() || p.items[0].is_list)
+            throw ParseError(p.location, "expected a " + kind + " declaration '(name ?x ...)'");
+        const std::string &name = p.items[0].symbol;
+        if (!seen.insert(name).second)
+            throw ParseError(p.location, "duplicate " + kind + " '" + name + "'");
+        result.push_back({name, parse_typed_list(p.items, 1, "parameter", &domain.type_parent),
+                          p.location});
+    }
+    return result;
+}
+
+CostExpression parse_cost(const SExpr &e, const NameScope &scope) {
+    if (e.items.size() != 3 || !e.items[1].has_head("total-cost"))
+        reject_unsupported(e, "numeric effects other than (increase (total-cost) ...)");
+    const SExpr &amount = e.items[2];
+    CostExpression cost;
+    if (amount.is_list) {
+        cost.function = scope.parse_atom(amount, true);
+        return cost;
+    }
+    try {
+        std::size_t used = 0;
+        cost.constant = std::stoi(amount.symbol, &used);
+        if (used != amount.symbol.size() || cost.constant < 0)
+            throw std::invalid_argument("not a non-negative integer");
+    } catch (const std::exception &) {
+        throw ParseError(amount.location, "action cost '" + amount.symbol +
+                                              "' is not a non-negative integer");
+    }
+    return cost;
+}
+
+void parse_effect(const SExpr &e, const NameScope &scope, Action &action) {
+    if (!e.is_list)
+        throw ParseError(e.location, "expected an effect in parentheses");
+    if (e.items.empty())
+        return;
+    if (e.has_head("and")) {
+        for (std::size_t i = 1; i < e.items.size(); ++i)
+            parse_effect(e.items[i], scope, action);
+    } else if (e.has_head("increase")) {
+        action.costs.push_back(parse_cost(e, scope));
+    } else {
+        Literal l = scope.parse_literal(e);
+        if (l.atom.predicate == "=")
+            throw ParseError(e.location, "an effect cannot change equality");
+        action.effect.push_back(l);
+    }
+}
+
+Action parse_action(const SExpr &e, const Domain &domain) {
+    if (e.items.size() < 2 || e.items[1].is_list)
+        throw ParseError(e.location, "expected an action name after ':action'");
+    Action action{e.items[1].symbol, {}, {}, {}, {}, e.location};
+    NameScope scope(domain, "in action '" + action.name + "'");
+    scope.add_objects(domain.constants);
+    for (std::size_t i = 2; i + 1 < e.items.size(); i += 2) {
+        const SExpr &key = e.items[i];
+        const SExpr &value = e.items[i + 1];
+        if (key.is_symbol(":parameters")) {
+            if (!value.is_list)
+                throw ParseError(value.location, "expected a parameter list");
+            action.parameters = parse_typed_list(value.items, 0, "parameter", &domain.type_parent);
+            scope.add_variables(action.parameters);
+        } else if (key.is_symbol(":precondition")) {
+            action.precondition = scope.parse_conjunction(value, "precondition");
+        } else if (key.is_symbol(":effect")) {
+            parse_effect(value, scope, action);
+        } else {
+            throw ParseError(key.location, "unknown action section '" + key.to_string() + "'");
+        }
+    }
+    if (e.items.size() % 2 != 0)
+        throw ParseError(e.items.back().location, "action section without a value");
+    return action;
+}
+
+}  // namespace
+
+Domain parse_domain(const SExpr &define, const std::string &file) {
+    if (!define.has_head("define") || define.items.size() < 2 || !define.items[1].has_head("domain") ||
+        define.items[1].items.size() != 2)
+        throw ParseError(define.location, "expected '(define (domain NAME) ...)'");
+    Domain domain;
+    domain.file = file;
+    domain.name = define.items[1].items[1].symbol;
+    std::set<std::string> sections_seen;
+    for (std::size_t i = 2; i < define.items.size(); ++i) {
+        const SExpr &section = define.items[i];
+        if (!section.is_list || section.items.empty() || section.items[0].is_list)
+            throw ParseError(section.location, "expected a domain section like '(:predicates ...)'");
+        const std::string &head = section.items[0].symbol;
+        if (head != ":action" && !sections_seen.insert(head).second)
+            throw ParseError(section.location, "duplicate section '" + head + "'");
+        if (head == ":requirements") {
+            parse_requirements(section, domain);
+        } else if (head == ":types") {
+            parse_types(section, domain);
+        } else if (head == ":constants") {
+            domain.constants = parse_typed_list(section.items, 1, "constant", &domain.type_parent);
+        } else if (head == ":predicates") {
+            domain.predicates = parse_signatures(section, domain, "predicate");
+        } else if (head == ":functions") {
+            domain.functions = parse_signatures(section, domain, "function");
+        } else if (head == ":action") {
+            Action action = parse_action(section, domain);
+            if (domain.find_action(action.name))
+                throw ParseError(section.location, "duplicate action '" + action.name + "'");
+            domain.actions.push_back(std::move(action));
+        } else if (head == ":derived" || head == ":durative-action" || head == ":constraints") {
+            reject_unsupported(section, "'" + head + "'");
+        } else {
+            throw ParseError(section.location, "unknown domain section '" + head + "'");
+        }
+    }
+    return domain;
+}
+
+Domain parse_domain_file(const std::string &path) {
+    return parse_domain(read_sexpr_file(path), path);
+}
+
+}  // namespace envdesign::pddl

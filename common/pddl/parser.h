@@ -1,0 +1,22 @@
+#pragma once
+// PDDL domain and problem files -> the lifted task (task.h).
+//
+// Accepted: STRIPS, :typing (with either), constants, :negative-preconditions, :equality,
+// :action-costs with static numeric functions. Anything else is rejected by name with a
+// ParseError at the offending place; nothing is silently misread.
+
+#include "pddl/sexpr.h"
+#include "pddl/task.h"
+
+#include <string>
+
+namespace envdesign::pddl {
+
+Domain parse_domain(const SExpr &define, const std::string &file);
+Domain parse_domain_file(const std::string &path);
+
+// The problem is checked against `domain`: every predicate, object and type must exist.
+Problem parse_problem(const SExpr &define, const std::string &file, const Domain &domain);
+Problem parse_problem_file(const std::string &path, const Domain &domain);
+
+}  // namespace envdesign::pddl

@@ -1,0 +1,119 @@
+#include "pddl/sexpr.h"
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace envdesign::pddl {
+namespace {
+
+class Reader {
+public:
+    Reader(const std::string &text, const std::string &file) : text_(text), file_(file) {}
+
+    SExpr read_top() {
+        skip_space();
+        if (at_end())
+            throw ParseError(here(), "empty input: expected '(define ...)'");
+        if (text_[pos_] != '(')
+            throw ParseError(here(), "expected '(' at the start of the file");
+        SExpr top = read_list();
+        skip_space();
+        if (!at_end())
+            throw ParseError(here(), "unexpected text after the closing parenthesis of "
+                                     "the top-level expression (unbalanced parentheses?)");
+        return top;
+    }
+
+private:
+    bool at_end() const { return pos_ >= text_.size(); }
+    Location here() const { return {file_, line_, column_}; }
+
+    void advance() {
+        if (text_[pos_] == '\n') {
+            ++line_;
+            column_ = 1;
+        } else {
+            ++column_;
+        }
+        ++pos_;
+    }
+
+    void skip_space() {
+        while (!at_end()) {
+            char c = text_[pos_];
+            if (c == ';') {
+                while (!at_end() && text_[pos_] != '\n')
+                    advance();
+            } else if (std::isspace(static_cast<unsigned char>(c))) {
+                advance();
+            } else {
+                return;
+            }
+        }
+    }
+
+    SExpr read_list() {
+        SExpr list;
+        list.is_list = true;
+        list.location = here();
+        advance();  // '('
+        while (true) {
+            skip_space();
+            if (at_end())
+                throw ParseError(list.location, "unbalanced parentheses: this '(' is never closed");
+            char c = text_[pos_];
+            if (c == ')') {
+                advance();
+                return list;
+            }
+            list.items.push_back(c == '(' ? read_list() : read_symbol());
+        }
+    }
+
+    SExpr read_symbol() {
+        SExpr symbol;
+        symbol.location = here();
+        while (!at_end()) {
+            char c = text_[pos_];
+            if (c == '(' || c == ')' || c == ';' || std::isspace(static_cast<unsigned char>(c)))
+                break;
+            symbol.symbol += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            advance();
+        }
+        return symbol;
+    }
+
+    const std::string &text_;
+    std::string file_;
+    std::size_t pos_ = 0;
+    int line_ = 1;
+    int column_ = 1;
+};
+
+}  // namespace
+
+std::string SExpr::to_string() const {
+    if (!is_list)
+        return symbol;
+    std::string out = "(";
+    for (std::size_t i = 0; i < items.size(); ++i)
+        out += (i ? " " : "") + items[i].to_string();
+    return out + ")";
+}
+
+SExpr read_sexpr(const std::string &text, const std::string &file) {
+    // A stray ')' is reported where it is, not as trailing content.
+    return Reader(text, file).read_top();
+}
+
+SExpr read_sexpr_file(const std::string &path) {
+    std::ifstream in(path);
+    if (!in)
+        throw ParseError({path, 0, 0}, "cannot open file");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return read_sexpr(buffer.str(), path);
+}
+
+}  // namespace envdesign::pddl

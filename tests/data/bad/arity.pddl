@@ -1,0 +1,7 @@
+(define (domain d)
+  (:requirements :strips)
+  (:predicates (p ?x))
+  (:action a
+    :parameters (?x ?y)
+    :precondition (p ?x ?y)
+    :effect (not (p ?x))))

@@ -1,0 +1,5 @@
+(define (problem pr)
+  (:domain d)
+  (:objects o1 o2)
+  (:init (p o1))
+  (:goal (not (p o3))))
