@@ -1,5 +1,6 @@
 #include "ground/grounder.h"
 
+#include "ground/invariants.h"
 #include "ground/reachability.h"
 #include "ground/simplify.h"
 
@@ -24,6 +25,7 @@ public:
             if (r_.is_fluent[r_.atoms[a][0]]) {
                 fact_of_atom_[static_cast<int>(a)] = task_.num_facts();
                 task_.fact_names.push_back(r_.atom_name(r_.atoms[a]));
+                fact_atoms_.push_back(r_.atoms[a]);
             }
         }
         for (const auto &atom : problem_.init)
@@ -36,8 +38,12 @@ public:
         task_.has_action_costs = problem_.minimize_total_cost;
         sort_unique(task_.initial_state);
         sort_unique(task_.goal);
+        fact_atoms_.resize(task_.num_facts());  // complements and markers are not atoms
         return std::move(task_);
     }
+
+    const std::vector<AtomKey> &fact_atoms() const { return fact_atoms_; }
+    const std::map<FactId, FactId> &complements() const { return complement_; }
 
 private:
     // The atom with variables replaced by the instance's objects.
@@ -166,14 +172,29 @@ private:
     GroundTask task_;
     std::map<int, FactId> fact_of_atom_;
     std::map<FactId, FactId> complement_;
+    std::vector<AtomKey> fact_atoms_;
 };
+
+// A fact and its complement are a group of two unless the fact is in a group already.
+void add_complement_groups(GroundTask &task, const std::map<FactId, FactId> &complements) {
+    std::vector<bool> grouped(task.num_facts(), false);
+    for (const auto &group : task.mutex_groups)
+        for (FactId f : group)
+            grouped[f] = true;
+    for (auto [fact, complement] : complements)
+        if (!grouped[fact] && !grouped[complement])
+            task.mutex_groups.push_back({fact, complement});
+}
 
 }  // namespace
 
 GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
                   GroundingStatistics *statistics) {
     Reachability reachability = explore(domain, problem);
-    GroundTask task = TaskBuilder(domain, problem, reachability).build();
+    TaskBuilder builder(domain, problem, reachability);
+    GroundTask task = builder.build();
+    add_mutex_groups(task, builder.fact_atoms());
+    add_complement_groups(task, builder.complements());
     if (statistics) {
         statistics->reachable_atoms = static_cast<int>(reachability.atoms.size());
         statistics->reachable_actions = static_cast<int>(reachability.actions.size());

@@ -29,7 +29,6 @@ void parse_requirements(const SExpr &section, Domain &domain) {
 }
 
 void parse_types(const SExpr &section, Domain &domain) {
-    // Types are declared in any order, so the names come first and parents are checked after.
     auto declared = parse_typed_list(section.items, 1, "type", nullptr);
     for (const auto &t : declared) {
         if (t.types.size() != 1)
@@ -38,12 +37,19 @@ void parse_types(const SExpr &section, Domain &domain) {
             throw ParseError(t.location, "duplicate type '" + t.name + "'");
         domain.type_parent[t.name] = t.types[0];
     }
-    for (const auto &t : declared) {
-        const std::string &parent = t.types[0];
-        if (parent != "object" && !domain.type_parent.count(parent))
-            throw ParseError(t.location, "undefined type '" + parent + "'");
-    }
+    // A parent that is never listed itself ("room hall - place") is a type below object,
+    // as IPC domains assume.
+    for (const auto &t : declared)
+        domain.type_parent.emplace(t.types[0], "object");
     domain.type_parent.erase("object");
+    for (const auto &[type, parent] : domain.type_parent) {
+        std::string ancestor = parent;
+        for (std::size_t depth = 0; ancestor != "object"; ++depth) {
+            if (ancestor == type || depth > domain.type_parent.size())
+                throw ParseError(section.location, "type '" + type + "' is its own ancestor");
+            ancestor = domain.type_parent.at(ancestor);
+        }
+    }
 }
 
 std::vector<Predicate> parse_signatures(const SExpr &section, const Domain &domain,
@@ -61,7 +67,7 @@ std::vector<Predicate> parse_signatures(const SExpr &section, const Domain &doma
         const std::string &name = p.items[0].symbol;
         if (!seen.insert(name).second)
             throw ParseError(p.location, "duplicate " + kind + " '" + name + "'");
-        result.push_back({name, parse_typed_list(p.items, 1, "parameter", &domain.type_parent),
+        result.push_back({name, parse_typed_list(p.items, 1, "placeholder", &domain.type_parent),
                           p.location});
     }
     return result;

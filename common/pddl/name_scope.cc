@@ -72,7 +72,8 @@ std::vector<TypedName> parse_typed_list(const std::vector<SExpr> &items, std::si
         }
         if (item.is_list)
             throw ParseError(item.location, "expected a " + kind + " name, found a list");
-        if (!seen.insert(item.symbol).second)
+        // Names in a predicate declaration are placeholders; logistics00 declares (in ?obj ?obj).
+        if (!seen.insert(item.symbol).second && kind != "placeholder")
             throw ParseError(item.location, "duplicate " + kind + " '" + item.symbol + "'");
         result.push_back({item.symbol, {"object"}, item.location});
     }
