@@ -79,11 +79,10 @@ private:
         return it->second;
     }
 
-    Cost cost_of(const pddl::Action &action, const ActionInstance &instance) const {
-        if (!problem_.minimize_total_cost)
-            return 1;
+    Cost cost_of(const pddl::Action &action, const std::vector<pddl::CostExpression> &costs,
+                 const ActionInstance &instance) const {
         long long total = 0;
-        for (const auto &c : action.costs) {
+        for (const auto &c : costs) {
             total += c.constant;
             if (!c.function)
                 continue;
@@ -120,7 +119,8 @@ private:
             if (f >= 0)
                 (l.negated ? op.del : op.add).push_back(f);
         }
-        op.cost = cost_of(action, instance);
+        op.cost = problem_.minimize_total_cost ? cost_of(action, action.costs, instance) : 1;
+        op.secondary_cost = cost_of(action, action.secondary_costs, instance);
         sort_unique(op.pre);
         sort_unique(op.add);
         sort_unique(op.del);

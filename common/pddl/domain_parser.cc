@@ -115,7 +115,9 @@ void parse_effect(const SExpr &e, const NameScope &scope, Action &action) {
 Action parse_action(const SExpr &e, const Domain &domain) {
     if (e.items.size() < 2 || e.items[1].is_list)
         throw ParseError(e.location, "expected an action name after ':action'");
-    Action action{e.items[1].symbol, {}, {}, {}, {}, e.location};
+    Action action;
+    action.name = e.items[1].symbol;
+    action.location = e.location;
     NameScope scope(domain, "in action '" + action.name + "'");
     scope.add_objects(domain.constants);
     for (std::size_t i = 2; i + 1 < e.items.size(); i += 2) {

@@ -55,6 +55,9 @@ struct Action {
     std::vector<Literal> precondition;  // a conjunction
     std::vector<Literal> effect;        // negated = delete
     std::vector<CostExpression> costs;  // summed; empty = no cost given
+    // A second cost, minimised among plans of least `costs` (the design engine's compiled
+    // task: human cost first, robot cost second). Not written in PDDL; empty = 0.
+    std::vector<CostExpression> secondary_costs;
     Location location;
 };
 
