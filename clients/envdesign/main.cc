@@ -2,6 +2,7 @@
 // this file only wires them up and maps failures to the exit codes of SPEC.md.
 
 #include "plan_command.h"
+#include "validate_command.h"
 
 #include <CLI/CLI.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -34,6 +35,10 @@ int main(int argc, char **argv) {
     envdesign::cli::add_plan_flags(*plan, plan_flags);
     plan->fallthrough();
 
+    envdesign::cli::ValidateFlags validate_flags;
+    auto *validate = app.add_subcommand("validate", "check a plan against a PDDL problem");
+    envdesign::cli::add_validate_flags(*validate, validate_flags);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp &e) {
@@ -46,6 +51,8 @@ int main(int argc, char **argv) {
     try {
         if (*plan)
             return envdesign::cli::run_plan(plan_flags);
+        if (*validate)
+            return envdesign::cli::run_validate(validate_flags);
     } catch (const std::bad_alloc &) {
         spdlog::error("out of memory");
         return 4;

@@ -1,0 +1,59 @@
+// `envdesign plan` as a process: output format, JSON and the exit codes of SPEC.md.
+
+#include "run_command.h"
+
+#include <gtest/gtest.h>
+
+namespace envdesign::testing {
+namespace {
+
+const std::string DATA = std::string(ENVDESIGN_TEST_DATA);
+const std::string IPC = std::string(ENVDESIGN_SHARED_DIR) + "/benchmarks/ipc/";
+
+TEST(PlanCommand, PrintsTheOptimalPlanInSasPlanFormat) {
+    CommandResult r = run_envdesign("plan " + DATA + "/tiny/domain.pddl " + DATA +
+                                        "/tiny/problem.pddl",
+                                    false);
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_EQ(r.out, "(move r1 kitchen hub)\n(unlock r1 lab)\n(move r1 hub lab)\n"
+                     "; cost = 9 (general cost)\n");
+}
+
+TEST(PlanCommand, UnitCostDomainsSayUnitCost) {
+    CommandResult r = run_envdesign("plan " + IPC + "blocks/domain.pddl " + IPC +
+                                        "blocks/probBLOCKS-4-0.pddl",
+                                    false);
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.out.find("; cost = 6 (unit cost)\n"), std::string::npos) << r.out;
+}
+
+TEST(PlanCommand, ProvenUnsolvableExitsThree) {
+    CommandResult r = run_envdesign("plan --json " + DATA + "/bad/ok-domain.pddl " + DATA +
+                                        "/unsolvable-problem.pddl",
+                                    false);
+    EXPECT_EQ(r.exit_code, 3);
+    EXPECT_NE(r.out.find("\"status\":\"unsolvable\""), std::string::npos) << r.out;
+}
+
+TEST(PlanCommand, TimeLimitExitsFour) {
+    // FD needs 248336 expansions here; a tenth of a second is far too little.
+    CommandResult r = run_envdesign("plan --json --time-limit 0.1 " + IPC + "blocks/domain.pddl " +
+                                        IPC + "blocks/probBLOCKS-10-0.pddl",
+                                    false);
+    EXPECT_EQ(r.exit_code, 4);
+    EXPECT_NE(r.out.find("\"status\":\"limit\""), std::string::npos) << r.out;
+}
+
+TEST(PlanCommand, JsonCarriesCostAndSearchStatistics) {
+    CommandResult r = run_envdesign("plan --json " + IPC + "blocks/domain.pddl " + IPC +
+                                        "blocks/probBLOCKS-4-0.pddl",
+                                    false);
+    EXPECT_EQ(r.exit_code, 0);
+    EXPECT_NE(r.out.find("\"cost\":6"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"status\":\"solved\""), std::string::npos) << r.out;
+    // FD's astar(lmcut()) expands 7 states on this instance (optimal-costs.csv).
+    EXPECT_NE(r.out.find("\"expansions\":7"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace envdesign::testing
