@@ -1,0 +1,87 @@
+#pragma once
+// The LM-cut landmark computation (Helmert & Domshlak, ICAPS 2009), separate from the
+// heuristic adapter so that the design search can reuse the cuts.
+//
+// Each round computes h^max with a supporter (a most expensive precondition) per operator,
+// marks the goal zone (propositions from which the artificial goal is reachable through
+// zero-cost supporter edges), and cuts the operators that lead from the part of the
+// justification graph reachable from the state (before the goal zone) into the goal zone.
+// The cut is a disjunctive action landmark; its cost is the minimum operator cost in it,
+// which is subtracted from its operators before h^max is repaired incrementally. The sum of
+// cut costs is the LM-cut estimate.
+//
+// Implementation follows Fast Downward's: flat arrays, FD's adaptive bucket queue and
+// supporter tie-breaking (the last precondition popped; on repair, the first of maximum
+// cost), and the incremental h^max update after each cut. All scratch memory is kept
+// between calls.
+//
+// Example:
+//   LmCutLandmarks lmcut(task);
+//   int h = lmcut.compute(state_facts, [&](std::span<const ground::OperatorId> cut, int cost) {
+//       ...  // one disjunctive action landmark
+//   });
+
+#include "ground/ground_task.h"
+#include "heuristics/adaptive_queue.h"
+#include "heuristics/relaxed_task.h"
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace envdesign::heuristics {
+
+class LmCutLandmarks {
+public:
+    // Receives one cut: the task operators in it (no duplicates) and its cost (> 0). The
+    // span is valid only during the call.
+    using CutCallback = std::function<void(std::span<const ground::OperatorId>, int)>;
+
+    // Keeps no reference to `task`.
+    explicit LmCutLandmarks(const ground::GroundTask &task);
+
+    // `facts`: the true facts of the state (any order, no duplicates). Returns the sum of
+    // the cut costs (0 iff h^max is 0), or DEAD_END (no cuts reported) if the goal is
+    // unreachable in the delete relaxation. Not thread-safe.
+    int compute(std::span<const ground::FactId> facts, const CutCallback &on_cut = {});
+
+private:
+    static constexpr int UNREACHED = 0x7fffffff;
+
+    struct OperatorData {
+        int cost;            // remaining cost in this computation
+        int unsatisfied;     // preconditions not yet reached (first exploration)
+        int supporter;       // h^max supporter proposition, -1 while unreached
+        int supporter_cost;  // h^max cost of the supporter
+    };
+
+    void first_exploration(std::span<const ground::FactId> facts);
+    void first_exploration_incremental();
+    void mark_goal_plateau();
+    void second_exploration(std::span<const ground::FactId> facts);
+    void next_zone_stamps();
+    void update_supporter(int op);
+    void enqueue_if_necessary(int prop, int cost) {
+        if (prop_cost_[prop] > cost) {
+            prop_cost_[prop] = cost;
+            queue_.push(cost, prop);
+        }
+    }
+    bool in_goal_zone(int prop) const { return zone_[prop] == goal_zone_stamp_; }
+
+    RelaxedTask relaxed_;
+    std::vector<OperatorData> ops_;
+    std::vector<int> num_preconditions_;
+    std::vector<int> prop_cost_;         // h^max cost, UNREACHED if not reached
+    // Zone marks without a per-round reset: a proposition is in the goal zone iff its
+    // stamp equals goal_zone_stamp_, before it iff the stamp is goal_zone_stamp_ + 1.
+    std::vector<std::uint32_t> zone_;
+    std::uint32_t goal_zone_stamp_ = 0;
+    AdaptiveQueue queue_;
+    std::vector<int> stack_;
+    std::vector<int> cut_;
+    std::vector<ground::OperatorId> landmark_;
+};
+
+}  // namespace envdesign::heuristics

@@ -1,0 +1,185 @@
+#include "search/astar_search.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace envdesign::search {
+namespace {
+
+bool has_secondary_costs(const ground::GroundTask &task) {
+    return std::any_of(task.operators.begin(), task.operators.end(),
+                       [](const ground::GroundOperator &op) { return op.secondary_cost != 0; });
+}
+
+int max_operator_cost(const ground::GroundTask &task) {
+    int result = 0;
+    for (const ground::GroundOperator &op : task.operators)
+        result = std::max(result, static_cast<int>(op.cost));
+    return result;
+}
+
+heuristics::StateView view_of(const UnpackedState &state) {
+    return heuristics::StateView(state.facts, state.bits);
+}
+
+}  // namespace
+
+AStarSearch::AStarSearch(const ground::GroundTask &task, heuristics::Heuristic &heuristic,
+                         SearchLimits limits)
+    : task_(task), heuristic_(heuristic), limits_(limits),
+      start_(std::chrono::steady_clock::now()), use_secondary_(has_secondary_costs(task)),
+      registry_(task), successors_(task),
+      open_list_(make_open_list(use_secondary_, max_operator_cost(task))),
+      current_(registry_.codec()), successor_(registry_.codec()) {
+    result_.stats.bytes_per_state = registry_.bytes_per_state();
+}
+
+SearchStatus AStarSearch::step() {
+    if (result_.status != SearchStatus::IN_PROGRESS)
+        return result_.status;
+    if (!initialized_)
+        return initialize();
+    if (result_.stats.expanded % CHECK_INTERVAL == 0 && limit_reached())
+        return finish(SearchStatus::LIMIT);
+    while (!open_list_->empty()) {
+        StateID id = open_list_->pop();
+        Node &node = nodes_[id];
+        // Entries of states closed since they were pushed are stale: FD skips them too.
+        if (node.status == NodeStatus::CLOSED)
+            continue;
+        node.status = NodeStatus::CLOSED;
+        ++result_.stats.expanded;
+        registry_.unpack(id, current_);
+        if (is_goal(current_)) {
+            extract_plan(id);
+            return finish(SearchStatus::SOLVED);
+        }
+        expand(id);
+        return SearchStatus::IN_PROGRESS;
+    }
+    return finish(SearchStatus::FAILED);
+}
+
+SearchStatus AStarSearch::initialize() {
+    initialized_ = true;
+    StateID id = registry_.insert_facts(task_.initial_state).id;
+    registry_.unpack(id, current_);
+    int h = heuristic_.compute(view_of(current_));
+    ++result_.stats.evaluated;
+    result_.stats.initial_h = h;
+    if (h == heuristics::DEAD_END) {
+        ++result_.stats.dead_ends;
+        nodes_[id].status = NodeStatus::DEAD_END;
+        return finish(SearchStatus::FAILED);
+    }
+    Node node;
+    node.h = h;
+    open(id, node);
+    return SearchStatus::IN_PROGRESS;
+}
+
+SearchStatus AStarSearch::finish(SearchStatus status) {
+    result_.status = status;
+    result_.stats.registered_states = static_cast<long long>(registry_.size());
+    result_.stats.search_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return status;
+}
+
+bool AStarSearch::limit_reached() const {
+    if (limits_.time_limit_s > 0) {
+        double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        if (elapsed >= limits_.time_limit_s)
+            return true;
+    }
+    return limits_.memory_limit_bytes > 0 && memory_bytes() >= limits_.memory_limit_bytes;
+}
+
+bool AStarSearch::is_goal(const UnpackedState &state) const {
+    return std::all_of(task_.goal.begin(), task_.goal.end(),
+                       [&](ground::FactId fact) { return state.holds(fact); });
+}
+
+void AStarSearch::expand(StateID id) {
+    successors_.applicable_operators(current_, applicable_);
+    for (ground::OperatorId op : applicable_)
+        generate(id, op);
+}
+
+void AStarSearch::generate(StateID parent_id, ground::OperatorId op) {
+    InsertResult succ = registry_.insert_successor(parent_id, op);
+    ++result_.stats.generated;
+    // Copy the parent: nodes_[succ.id] may grow the storage and move it.
+    const Node parent = nodes_[parent_id];
+    const ground::GroundOperator &o = task_.operators[op];
+    Node candidate;
+    candidate.g = parent.g + o.cost;
+    candidate.secondary_g = parent.secondary_g + o.secondary_cost;
+    candidate.parent = parent_id;
+    candidate.op = op;
+    Node &node = nodes_[succ.id];
+    if (node.status == NodeStatus::DEAD_END)
+        return;
+    if (node.status == NodeStatus::NEW) {
+        registry_.unpack(succ.id, successor_);
+        int h = heuristic_.compute(view_of(successor_));
+        ++result_.stats.evaluated;
+        if (h == heuristics::DEAD_END) {
+            node.status = NodeStatus::DEAD_END;
+            ++result_.stats.dead_ends;
+            return;
+        }
+        candidate.h = h;
+        node = candidate;
+        open(succ.id, node);
+        return;
+    }
+    if (std::tie(candidate.g, candidate.secondary_g) < std::tie(node.g, node.secondary_g)) {
+        if (node.status == NodeStatus::CLOSED)
+            ++result_.stats.reopened;
+        candidate.h = node.h;  // cached: heuristics here are not path-dependent
+        node = candidate;
+        open(succ.id, node);
+    }
+}
+
+void AStarSearch::open(StateID id, const Node &node) {
+    nodes_[id] = node;
+    nodes_[id].status = NodeStatus::OPEN;
+    open_list_->push(id, {node.g + node.h, use_secondary_ ? node.secondary_g : 0, node.h});
+}
+
+void AStarSearch::extract_plan(StateID goal) {
+    const Node &goal_node = nodes_[goal];
+    result_.cost = goal_node.g;
+    result_.secondary_cost = goal_node.secondary_g;
+    result_.plan.clear();
+    for (StateID id = goal; nodes_[id].parent != NO_STATE; id = nodes_[id].parent)
+        result_.plan.push_back(nodes_[id].op);
+    std::reverse(result_.plan.begin(), result_.plan.end());
+}
+
+std::size_t AStarSearch::memory_bytes() const {
+    return registry_.memory_bytes() + nodes_.memory_bytes() + open_list_->memory_bytes();
+}
+
+SearchResult AStarSearch::result() const {
+    SearchResult copy = result_;
+    copy.stats.registered_states = static_cast<long long>(registry_.size());
+    if (copy.status == SearchStatus::IN_PROGRESS)
+        copy.stats.search_seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    return copy;
+}
+
+SearchResult astar(const ground::GroundTask &task, heuristics::HeuristicKind kind,
+                   const SearchLimits &limits) {
+    std::unique_ptr<heuristics::Heuristic> heuristic = heuristics::make_heuristic(kind, task);
+    AStarSearch search(task, *heuristic, limits);
+    while (search.step() == SearchStatus::IN_PROGRESS) {
+    }
+    return search.result();
+}
+
+}  // namespace envdesign::search

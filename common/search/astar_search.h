@@ -1,0 +1,123 @@
+#pragma once
+// Optimal A* search with reopening over a GroundTask, step by step.
+//
+// Plans minimise the primary cost; among plans of minimum primary cost, the secondary cost
+// (lexicographic costs; the heuristic estimates the primary cost only, so h = (h, 0) stays
+// admissible). The open list orders by (f = g + h, secondary g, h) ascending, FIFO among
+// equal keys, which is Fast Downward's astar tie-breaking [sum(g, h), h] when secondary
+// costs are all 0. States are evaluated when generated, dead ends (h = DEAD_END) are
+// pruned, and closed states are reopened when reached more cheaply (LM-cut is admissible
+// but not consistent). A state counts as expanded when it is taken from the open list and
+// not already closed, the goal state included (as in FD, whose counts we match).
+//
+// Example:
+//   auto h = heuristics::make_heuristic(heuristics::HeuristicKind::LMCUT, task);
+//   AStarSearch search(task, *h, {.time_limit_s = 10});
+//   SearchStatus status;
+//   while ((status = search.step()) == SearchStatus::IN_PROGRESS) {
+//       if (cancelled) break;   // callers may stop between steps
+//   }
+//   SearchResult result = search.result();
+
+#include "ground/ground_task.h"
+#include "heuristics/heuristic.h"
+#include "search/open_list.h"
+#include "search/per_state_information.h"
+#include "search/state_registry.h"
+#include "search/successor_generator.h"
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace envdesign::search {
+
+enum class SearchStatus { IN_PROGRESS, SOLVED, FAILED, LIMIT };
+
+struct SearchLimits {
+    double time_limit_s = 0;            // wall clock from construction; <= 0: none
+    // Bytes of search data this search owns (state registry, per-state data, open list),
+    // not the process size; 0: none. Both limits are checked every CHECK_INTERVAL steps.
+    std::size_t memory_limit_bytes = 0;
+};
+
+struct SearchStatistics {
+    long long expanded = 0;
+    long long generated = 0;   // successors produced, duplicates included
+    long long evaluated = 0;   // heuristic evaluations, the initial state included
+    long long reopened = 0;
+    long long dead_ends = 0;
+    long long registered_states = 0;
+    std::size_t bytes_per_state = 0;  // packed state size in the registry
+    int initial_h = 0;
+    double search_seconds = 0;
+};
+
+struct SearchResult {
+    SearchStatus status = SearchStatus::IN_PROGRESS;
+    std::vector<ground::OperatorId> plan;  // only when SOLVED
+    long long cost = 0;                     // primary cost of the plan
+    long long secondary_cost = 0;
+    SearchStatistics stats;
+};
+
+class AStarSearch {
+public:
+    static constexpr int CHECK_INTERVAL = 64;
+
+    // Keeps references to `task` and `heuristic`, which must outlive the search.
+    AStarSearch(const ground::GroundTask &task, heuristics::Heuristic &heuristic,
+                SearchLimits limits = {});
+
+    // Expands one state (the first call evaluates the initial state, then expands it).
+    // Once the result is not IN_PROGRESS, further calls return it unchanged.
+    SearchStatus step();
+    // The result so far (plan and cost once SOLVED).
+    SearchResult result() const;
+
+    // Bytes of the search data counted by the memory limit.
+    std::size_t memory_bytes() const;
+
+private:
+    enum class NodeStatus : std::uint8_t { NEW, OPEN, CLOSED, DEAD_END };
+    struct Node {
+        int g = 0;
+        int h = 0;
+        StateID parent = NO_STATE;
+        ground::OperatorId op = -1;
+        long long secondary_g = 0;
+        NodeStatus status = NodeStatus::NEW;
+    };
+
+    SearchStatus initialize();
+    SearchStatus finish(SearchStatus status);
+    bool limit_reached() const;
+    bool is_goal(const UnpackedState &state) const;
+    void expand(StateID id);
+    void generate(StateID parent, ground::OperatorId op);
+    void open(StateID id, const Node &node);
+    void extract_plan(StateID goal);
+
+    const ground::GroundTask &task_;
+    heuristics::Heuristic &heuristic_;
+    SearchLimits limits_;
+    std::chrono::steady_clock::time_point start_;
+    bool use_secondary_ = false;
+    bool initialized_ = false;
+    StateRegistry registry_;
+    SuccessorGenerator successors_;
+    PerStateInformation<Node> nodes_;
+    std::unique_ptr<OpenList> open_list_;
+    UnpackedState current_;    // the state being expanded
+    UnpackedState successor_;  // scratch for evaluating a new successor
+    std::vector<ground::OperatorId> applicable_;
+    SearchResult result_;
+};
+
+// Runs A* with a fresh heuristic of `kind` to the end.
+SearchResult astar(const ground::GroundTask &task, heuristics::HeuristicKind kind,
+                   const SearchLimits &limits = {});
+
+}  // namespace envdesign::search
