@@ -25,7 +25,7 @@ int LmCutLandmarks::compute(std::span<const ground::FactId> facts, const CutCall
         next_zone_stamps();
         mark_goal_plateau();
         cut_.clear();
-        second_exploration(facts);
+        second_exploration();
         assert(!cut_.empty());
         int cut_cost = UNREACHED;
         for (int op : cut_)
@@ -35,7 +35,9 @@ int LmCutLandmarks::compute(std::span<const ground::FactId> facts, const CutCall
         total += cut_cost;
         if (on_cut) {
             // The goal operator costs 0, so it is never in a cut: every entry is a task op.
-            landmark_.assign(cut_.begin(), cut_.end());
+            landmark_.clear();
+            for (int op : cut_)
+                landmark_.push_back(relaxed_.task_operator(op));
             on_cut(landmark_, cut_cost);
         }
         first_exploration_incremental();
@@ -49,7 +51,13 @@ void LmCutLandmarks::first_exploration(std::span<const ground::FactId> facts) {
     const int num_ops = relaxed_.num_operators();
     for (int op = 0; op < num_ops; ++op)
         ops_[op] = {relaxed_.cost(op), num_preconditions_[op], -1, UNREACHED};
-    for (ground::FactId fact : facts)
+    // FD queues a state's facts in variable order; the bucket queue is LIFO, so this order
+    // decides which of several cost-0 preconditions becomes the supporter.
+    ranked_facts_.assign(facts.begin(), facts.end());
+    std::sort(ranked_facts_.begin(), ranked_facts_.end(), [&](ground::FactId a, ground::FactId b) {
+        return relaxed_.fact_rank(a) < relaxed_.fact_rank(b);
+    });
+    for (ground::FactId fact : ranked_facts_)
         enqueue_if_necessary(fact, 0);
     enqueue_if_necessary(relaxed_.artificial_precondition(), 0);
     while (!queue_.empty()) {
@@ -141,13 +149,13 @@ void LmCutLandmarks::mark_goal_plateau() {
 
 // Walks the justification graph from the state; operators that lead into the goal zone
 // form the cut, everything else they reach is before the goal zone.
-void LmCutLandmarks::second_exploration(std::span<const ground::FactId> facts) {
+void LmCutLandmarks::second_exploration() {
     const std::uint32_t before = goal_zone_stamp_ + 1;
     stack_.clear();
     const int artificial = relaxed_.artificial_precondition();
     zone_[artificial] = before;
     stack_.push_back(artificial);
-    for (ground::FactId fact : facts) {
+    for (ground::FactId fact : ranked_facts_) {
         zone_[fact] = before;
         stack_.push_back(fact);
     }

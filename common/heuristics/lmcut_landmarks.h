@@ -59,7 +59,7 @@ private:
     void first_exploration(std::span<const ground::FactId> facts);
     void first_exploration_incremental();
     void mark_goal_plateau();
-    void second_exploration(std::span<const ground::FactId> facts);
+    void second_exploration();  // from ranked_facts_, set by first_exploration
     void next_zone_stamps();
     void update_supporter(int op);
     void enqueue_if_necessary(int prop, int cost) {
@@ -80,6 +80,7 @@ private:
     std::uint32_t goal_zone_stamp_ = 0;
     AdaptiveQueue queue_;
     std::vector<int> stack_;
+    std::vector<ground::FactId> ranked_facts_;  // the state's facts in FD's order
     std::vector<int> cut_;
     std::vector<ground::OperatorId> landmark_;
 };

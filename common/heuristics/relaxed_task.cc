@@ -1,9 +1,44 @@
 #include "heuristics/relaxed_task.h"
 
+#include <algorithm>
+
 namespace envdesign::heuristics {
+namespace {
+
+// FD lists prevail conditions (on variables the operator leaves alone) before the
+// preconditions of its effects, each group sorted by variable.
+std::vector<ground::FactId> fd_precondition_order(const ground::GroundOperator &op,
+                                                  const FdOrder &order) {
+    std::vector<int> changed;
+    for (ground::FactId f : op.add)
+        if (!std::binary_search(op.pre.begin(), op.pre.end(), f))
+            changed.push_back(order.fact_variable[f]);
+    for (ground::FactId f : op.del)
+        changed.push_back(order.fact_variable[f]);
+    auto is_changed = [&](ground::FactId f) {
+        return std::find(changed.begin(), changed.end(), order.fact_variable[f]) != changed.end();
+    };
+    std::vector<ground::FactId> pre = op.pre;
+    std::stable_sort(pre.begin(), pre.end(), [&](ground::FactId a, ground::FactId b) {
+        return std::pair(is_changed(a), order.fact_rank[a]) <
+               std::pair(is_changed(b), order.fact_rank[b]);
+    });
+    return pre;
+}
+
+std::vector<ground::FactId> by_rank(std::vector<ground::FactId> facts, const FdOrder &order) {
+    std::sort(facts.begin(), facts.end(), [&](ground::FactId a, ground::FactId b) {
+        return order.fact_rank[a] < order.fact_rank[b];
+    });
+    return facts;
+}
+
+}  // namespace
 
 RelaxedTask::RelaxedTask(const ground::GroundTask &task)
     : num_facts_(task.num_facts()), num_task_operators_(task.num_operators()) {
+    FdOrder order = compute_fd_order(task);
+    fact_rank_ = order.fact_rank;
     costs_.reserve(num_operators());
     auto add_operator = [&](const std::vector<ground::FactId> &pre,
                             const std::vector<ground::FactId> &eff, int cost) {
@@ -16,9 +51,12 @@ RelaxedTask::RelaxedTask(const ground::GroundTask &task)
         eff_.offsets.push_back(static_cast<int>(eff_.items.size()));
         costs_.push_back(cost);
     };
-    for (const ground::GroundOperator &op : task.operators)
-        add_operator(op.pre, op.add, op.cost);
-    add_operator(task.goal, {artificial_goal()}, 0);
+    task_operators_ = order.operators;
+    for (ground::OperatorId id : task_operators_) {
+        const ground::GroundOperator &op = task.operators[id];
+        add_operator(fd_precondition_order(op, order), by_rank(op.add, order), op.cost);
+    }
+    add_operator(by_rank(task.goal, order), {artificial_goal()}, 0);
     pre_of_ = invert(pre_, num_propositions());
     eff_of_ = invert(eff_, num_propositions());
 }

@@ -4,11 +4,18 @@
 // Propositions are the task's facts plus two artificial ones: ARTIFICIAL_PRECONDITION, true
 // in every state and the only precondition of operators that have none (so every operator
 // is triggered by some proposition), and ARTIFICIAL_GOAL, the single effect of an extra
-// zero-cost goal operator whose preconditions are the task's goal facts. Relaxed operator
-// i < num_task_operators is task operator i (its add effects only); the last one is the
-// goal operator. This mirrors Fast Downward's LM-cut construction.
+// zero-cost goal operator whose preconditions are the task's goal facts. Relaxed operators
+// i < num_task_operators are the task's operators (their add effects only) in FD's order,
+// task_operator(i) maps back; the last one is the goal operator. This mirrors Fast
+// Downward's LM-cut construction.
+//
+// Preconditions, effects and the goal are listed in the order FD's translator would give
+// them (fd_order.h): first the preconditions on variables the operator does not
+// change, then those it changes, each by variable. fact_rank() ranks facts the same way
+// for queueing a state's facts. These orders only decide ties, as in FD.
 
 #include "ground/ground_task.h"
+#include "heuristics/fd_order.h"
 
 #include <span>
 #include <vector>
@@ -27,6 +34,9 @@ public:
     int goal_operator() const { return num_task_operators_; }
 
     int cost(int op) const { return costs_[op]; }
+    ground::OperatorId task_operator(int op) const { return task_operators_[op]; }
+    // Position of each fact in FD's (variable, value) order.
+    int fact_rank(ground::FactId fact) const { return fact_rank_[fact]; }
     std::span<const int> preconditions(int op) const { return slice(pre_, op); }
     std::span<const int> effects(int op) const { return slice(eff_, op); }
     std::span<const int> precondition_of(int prop) const { return slice(pre_of_, prop); }
@@ -46,6 +56,8 @@ private:
     int num_facts_;
     int num_task_operators_;
     std::vector<int> costs_;
+    std::vector<int> fact_rank_;
+    std::vector<ground::OperatorId> task_operators_;
     Csr pre_;
     Csr eff_;
     Csr pre_of_;

@@ -48,6 +48,10 @@ SearchStatus AStarSearch::step() {
         if (node.status == NodeStatus::CLOSED)
             continue;
         node.status = NodeStatus::CLOSED;
+        if (node.g + node.h > last_jump_f_) {
+            last_jump_f_ = node.g + node.h;
+            result_.stats.expanded_until_last_jump = result_.stats.expanded;
+        }
         ++result_.stats.expanded;
         registry_.unpack(id, current_);
         if (is_goal(current_)) {

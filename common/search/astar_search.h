@@ -45,6 +45,9 @@ struct SearchLimits {
 
 struct SearchStatistics {
     long long expanded = 0;
+    // Expansions before the first state of the final f layer was expanded (FD's "expanded
+    // until last jump"): the part of the effort that tie-breaking cannot change.
+    long long expanded_until_last_jump = 0;
     long long generated = 0;   // successors produced, duplicates included
     long long evaluated = 0;   // heuristic evaluations, the initial state included
     long long reopened = 0;
@@ -114,6 +117,7 @@ private:
     UnpackedState successor_;  // scratch for evaluating a new successor
     std::vector<ground::OperatorId> applicable_;
     SearchResult result_;
+    int last_jump_f_ = -1;
 };
 
 // Runs A* with a fresh heuristic of `kind` to the end.

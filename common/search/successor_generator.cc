@@ -1,5 +1,7 @@
 #include "search/successor_generator.h"
 
+#include "heuristics/fd_order.h"
+
 #include <algorithm>
 
 namespace envdesign::search {
@@ -13,9 +15,31 @@ std::vector<int> mutex_group_sizes(const ground::GroundTask &task) {
     return size;
 }
 
+// FD's generator is a decision tree over operators sorted by their (variable, value)
+// preconditions, so it yields applicable operators in that lexicographic order; operators
+// with equal preconditions come in FD's operator order.
+std::vector<int> fd_generation_ranks(const ground::GroundTask &task) {
+    heuristics::FdOrder order = heuristics::compute_fd_order(task);
+    std::vector<std::vector<int>> keys(task.num_operators());
+    for (ground::OperatorId op = 0; op < task.num_operators(); ++op) {
+        for (ground::FactId fact : task.operators[op].pre)
+            keys[op].push_back(order.fact_rank[fact]);
+        std::sort(keys[op].begin(), keys[op].end());
+    }
+    std::vector<ground::OperatorId> ops = order.operators;
+    std::stable_sort(ops.begin(), ops.end(), [&](ground::OperatorId a, ground::OperatorId b) {
+        return keys[a] < keys[b];
+    });
+    std::vector<int> rank(task.num_operators());
+    for (int i = 0; i < task.num_operators(); ++i)
+        rank[ops[i]] = i;
+    return rank;
+}
+
 }  // namespace
 
-SuccessorGenerator::SuccessorGenerator(const ground::GroundTask &task) {
+SuccessorGenerator::SuccessorGenerator(const ground::GroundTask &task)
+    : generation_rank_(fd_generation_ranks(task)) {
     std::vector<int> group_size = mutex_group_sizes(task);
     std::vector<ground::FactId> key(task.num_operators(), -1);
     std::vector<int> count(task.num_facts() + 1, 0);
@@ -57,7 +81,9 @@ void SuccessorGenerator::applicable_operators(const UnpackedState &state,
                 out.push_back(op);
         }
     }
-    std::sort(out.begin(), out.end());
+    std::sort(out.begin(), out.end(), [&](ground::OperatorId a, ground::OperatorId b) {
+        return generation_rank_[a] < generation_rank_[b];
+    });
 }
 
 }  // namespace envdesign::search

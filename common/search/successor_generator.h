@@ -6,6 +6,10 @@
 // alternatives). A state then only looks at the operators filed under its true facts and
 // checks their other preconditions on the state's bitset. Operators without preconditions
 // are always applicable.
+//
+// Operators come out in the order of Fast Downward's successor generator (by their
+// preconditions in FD's fact order, see heuristics/fd_order.h): with FIFO tie-breaking in
+// the open list, this keeps expansion counts close to FD's.
 
 #include "ground/ground_task.h"
 #include "search/state_codec.h"
@@ -19,7 +23,7 @@ public:
     // Keeps no reference to `task`.
     explicit SuccessorGenerator(const ground::GroundTask &task);
 
-    // Replaces `out` by the operators applicable in `state`, in increasing id order.
+    // Replaces `out` by the operators applicable in `state`, in FD's generation order.
     void applicable_operators(const UnpackedState &state,
                               std::vector<ground::OperatorId> &out) const;
 
@@ -29,6 +33,7 @@ private:
     std::vector<ground::OperatorId> unconditional_;
     std::vector<int> rest_offsets_;             // per operator: its non-key preconditions
     std::vector<ground::FactId> rest_;
+    std::vector<int> generation_rank_;          // per operator: position in FD's order
 };
 
 }  // namespace envdesign::search

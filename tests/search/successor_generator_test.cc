@@ -40,6 +40,7 @@ TEST(SuccessorGenerator, MatchesBruteForce) {
             codec.pack(facts, bins.data());
             codec.unpack(bins.data(), state);
             generator.applicable_operators(state, applicable);
+            std::sort(applicable.begin(), applicable.end());  // FD's order, compared as a set
             std::vector<ground::OperatorId> expected;
             for (int o = 0; o < task.num_operators(); ++o) {
                 const auto &pre = task.operators[o].pre;
@@ -49,6 +50,28 @@ TEST(SuccessorGenerator, MatchesBruteForce) {
             ASSERT_EQ(applicable, expected);
         }
     }
+}
+
+// FD's generator yields operators sorted by their preconditions in FD's fact order; here
+// all facts are ungrouped and causally independent, so FD's Tarjan pass reverses their
+// sorted names: (c) < (b) < (a). Ties (equal preconditions) go by operator name.
+TEST(SuccessorGenerator, FastDownwardOrder) {
+    ground::GroundTask task;
+    task.fact_names = {"(c)", "(a)", "(b)"};
+    testing::add_op(task, "(o1)", {0}, {}, {});       // pre (c)
+    testing::add_op(task, "(o2)", {1, 2}, {}, {});    // pre (b) (a)
+    testing::add_op(task, "(o3)", {}, {}, {});        // no precondition: first
+    testing::add_op(task, "(o4)", {1}, {}, {});       // pre (a): after (b) (a)
+    testing::add_op(task, "(o0)", {0}, {}, {});       // same as o1, smaller name
+    SuccessorGenerator generator(task);
+    StateCodec codec(task);
+    UnpackedState state(codec);
+    std::vector<StateCodec::Bin> bins(codec.num_bins());
+    codec.pack(std::vector<ground::FactId>{0, 1, 2}, bins.data());
+    codec.unpack(bins.data(), state);
+    std::vector<ground::OperatorId> applicable;
+    generator.applicable_operators(state, applicable);
+    EXPECT_EQ(applicable, (std::vector<ground::OperatorId>{2, 4, 0, 1, 3}));
 }
 
 }  // namespace
