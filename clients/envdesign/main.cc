@@ -1,6 +1,8 @@
 // envdesign: the command line. Each subcommand's flags and logic live in its own file;
 // this file only wires them up and maps failures to the exit codes of SPEC.md.
 
+#include "design_command.h"
+#include "explicable_command.h"
 #include "plan_command.h"
 #include "validate_command.h"
 
@@ -39,6 +41,14 @@ int main(int argc, char **argv) {
     auto *validate = app.add_subcommand("validate", "check a plan against a PDDL problem");
     envdesign::cli::add_validate_flags(*validate, validate_flags);
 
+    envdesign::cli::ExplicableFlags explicable_flags;
+    auto *explicable = app.add_subcommand("explicable", "most explicable plan of a robot/human pair");
+    envdesign::cli::add_explicable_flags(*explicable, explicable_flags);
+
+    envdesign::cli::DesignFlags design_flags;
+    auto *design = app.add_subcommand("design", "optimal environment design of a design problem");
+    envdesign::cli::add_design_flags(*design, design_flags);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp &e) {
@@ -53,6 +63,10 @@ int main(int argc, char **argv) {
             return envdesign::cli::run_plan(plan_flags);
         if (*validate)
             return envdesign::cli::run_validate(validate_flags);
+        if (*explicable)
+            return envdesign::cli::run_explicable(explicable_flags);
+        if (*design)
+            return envdesign::cli::run_design(design_flags);
     } catch (const std::bad_alloc &) {
         spdlog::error("out of memory");
         return 4;

@@ -1,0 +1,111 @@
+#include "design_command.h"
+
+#include "design/design_search.h"
+#include "design/design_spec.h"
+#include "design/local_evaluator.h"
+#include "design/progress.h"
+#include "design/relevance.h"
+#include "design/result_json.h"
+
+#include <spdlog/spdlog.h>
+
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+namespace envdesign::cli {
+namespace {
+
+std::string number(double value) { return design::json_number(value).dump(); }
+
+void print_terms(const std::string &label, const design::EvaluatedDesign &d) {
+    const auto &t = d.objective.terms;
+    std::cout << label << number(d.objective.value) << " (inexplicability " << number(t.inexplicability)
+              << ", design cost " << number(t.design_cost) << ", robot cost "
+              << number(t.robot_cost) << ")\n";
+}
+
+void print_text(const design::DesignProblem &problem, const design::DesignResult &result) {
+    std::cout << "status: " << (result.optimal ? "optimal" : "best_found") << "\n";
+    if (!result.best) {
+        std::cout << "no configuration was evaluated in time\n";
+        return;
+    }
+    std::cout << "design: " << design::to_string(problem, result.best->ranked.configuration) << "\n";
+    print_terms("objective: ", *result.best);
+    if (result.baseline)
+        print_terms("baseline: ", *result.baseline);
+    for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
+        const auto &t = result.best->tasks[i];
+        std::cout << "task " << problem.tasks[i].name << ": ie " << number(t.ie) << ", robot cost "
+                  << number(t.robot_cost) << ", plan";
+        for (const auto &step : t.plan)
+            std::cout << " " << step;
+        std::cout << "\n";
+    }
+}
+
+design::DesignSearchOptions search_options(const DesignFlags &flags,
+                                           const design::DesignProblem &problem) {
+    design::DesignSearchOptions options;
+    options.max_design_size = flags.max_design_size >= 0 ? flags.max_design_size
+                                                         : problem.max_design_size;
+    double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem.time_limit_s;
+    options.deadline = design::Deadline::in(seconds);
+    options.batch_size = 4 * std::max(1, flags.workers);
+    return options;
+}
+
+}  // namespace
+
+void add_design_flags(CLI::App &command, DesignFlags &flags) {
+    command.add_option("spec", flags.spec, "design problem file (.textproto or .json)")->required();
+    command.add_flag("--json", flags.json, "print a JSON result");
+    command.add_option("--workers", flags.workers, "planner threads")->check(CLI::Range(1, 256));
+    command.add_option("--time-limit", flags.time_limit_s, "seconds (0: none; default: the spec's)")
+        ->check(CLI::NonNegativeNumber);
+    command.add_option("--max-design-size", flags.max_design_size,
+                       "most modifications in a design (0: no limit; default: the spec's)")
+        ->check(CLI::NonNegativeNumber);
+    command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
+        ->check(CLI::IsMember({"none", "relevant"}));
+    command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
+        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+    command.add_option("--connect", flags.connect, "LCM URL of a running coordinator");
+}
+
+int run_design(const DesignFlags &flags) {
+    if (!flags.connect.empty()) {
+        std::cerr << "envdesign design: --connect is not available yet (issue 5); run without it "
+                     "to search in this process"
+                  << std::endl;
+        return 2;
+    }
+    design::DesignProblem problem;
+    try {
+        problem = design::load_design_problem(flags.spec);
+    } catch (const pddl::ParseError &e) {
+        std::cerr << e.what() << std::endl;
+        return 2;
+    }
+    design::DesignSearchOptions options = search_options(flags, problem);
+    planning::PlannerOptions planner;
+    planner.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
+    design::LocalEvaluator evaluator(problem, flags.workers, planner);
+    if (flags.prune == "relevant")
+        options.candidates =
+            design::relevant_modifications(problem, evaluator.planner(), options.deadline);
+    design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
+    design::DesignResult result = design::search_design(
+        problem, evaluator, options, [&](const design::SearchProgress &p) { printer.update(p); });
+    printer.finish(result);
+    if (flags.json)
+        std::cout << design::design_json(problem, result).dump() << std::endl;
+    else
+        print_text(problem, result);
+    if (result.limit_reached)
+        spdlog::warn("the time limit stopped the search; the design is the best found");
+    return result.limit_reached ? 4 : 0;
+}
+
+}  // namespace envdesign::cli

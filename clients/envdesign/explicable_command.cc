@@ -1,0 +1,84 @@
+#include "explicable_command.h"
+
+#include "design/explicability.h"
+#include "design/result_json.h"
+#include "pddl/parser.h"
+
+#include <iostream>
+
+namespace envdesign::cli {
+namespace {
+
+design::ModelPair load_models(const ExplicableFlags &flags) {
+    design::ModelPair models;
+    models.robot_domain = pddl::parse_domain_file(flags.robot_domain);
+    models.human_domain = flags.human_domain.empty() ? models.robot_domain
+                                                     : pddl::parse_domain_file(flags.human_domain);
+    models.robot_problem = pddl::parse_problem_file(flags.problem, models.robot_domain);
+    const std::string &human = flags.human_problem.empty() ? flags.problem : flags.human_problem;
+    models.human_problem = pddl::parse_problem_file(human, models.human_domain);
+    return models;
+}
+
+std::string number(std::optional<double> value) {
+    return design::json_number(value).dump();
+}
+
+void print_text(const design::TaskExplicability &r) {
+    for (const auto &step : r.plan)
+        std::cout << step << "\n";
+    std::cout << "; ie = " << number(r.ie) << ", robot cost = " << number(r.robot_cost)
+              << ", human plan cost = " << number(r.human_plan_cost)
+              << ", human optimal cost = " << number(r.human_optimal_cost) << "\n";
+}
+
+}  // namespace
+
+void add_explicable_flags(CLI::App &command, ExplicableFlags &flags) {
+    command.add_option("--robot-domain", flags.robot_domain, "PDDL domain of the robot's model")
+        ->required();
+    command.add_option("--human-domain", flags.human_domain,
+                       "PDDL domain of the human's model (default: the robot's)");
+    command.add_option("--problem", flags.problem, "PDDL problem (the robot's)")->required();
+    command.add_option("--human-problem", flags.human_problem,
+                       "PDDL problem of the human's model (default: --problem)");
+    command.add_option("--distance", flags.distance, "EXP_COST_DIFF | COST_DIFF")
+        ->check(CLI::IsMember({"EXP_COST_DIFF", "COST_DIFF"}));
+    command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
+        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+    command.add_option("--time-limit", flags.time_limit_s, "seconds (0: none)")
+        ->check(CLI::NonNegativeNumber);
+    command.add_flag("--json", flags.json, "print a JSON result");
+}
+
+int run_explicable(const ExplicableFlags &flags) {
+    design::ModelPair models;
+    planning::PlannerOptions options;
+    options.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
+    design::PlanCache planner(options);
+    design::TaskExplicability result;
+    try {
+        models = load_models(flags);
+        auto distance = flags.distance == "COST_DIFF" ? design::Distance::COST_DIFF
+                                                      : design::Distance::EXP_COST_DIFF;
+        result = design::evaluate_explicability(models, distance, planner,
+                                                design::Deadline::in(flags.time_limit_s), true);
+    } catch (const pddl::ParseError &e) {
+        std::cerr << e.what() << std::endl;
+        return 2;
+    }
+    if (flags.json)
+        std::cout << design::explicability_json(result).dump() << std::endl;
+    else
+        print_text(result);
+    switch (result.status) {
+    case design::ExplicabilityStatus::SOLVED:
+        return 0;
+    case design::ExplicabilityStatus::INEXPLICABLE:
+        return 3;
+    default:
+        return 4;
+    }
+}
+
+}  // namespace envdesign::cli

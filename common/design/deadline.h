@@ -1,0 +1,39 @@
+#pragma once
+// A point in time after which the design search stops (the spec's time_limit_s or
+// --time-limit). Unlimited by default.
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+namespace envdesign::design {
+
+class Deadline {
+public:
+    Deadline() = default;
+    // `seconds` <= 0: no limit.
+    static Deadline in(double seconds) {
+        Deadline d;
+        if (seconds > 0)
+            d.at_ = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                        std::chrono::duration<double>(seconds));
+        return d;
+    }
+
+    bool limited() const { return at_.has_value(); }
+    bool expired() const { return at_ && std::chrono::steady_clock::now() >= *at_; }
+    // Seconds left (at least a millisecond so a planner call gets a positive limit);
+    // 0 means unlimited.
+    double remaining_seconds() const {
+        if (!at_)
+            return 0;
+        double left = std::chrono::duration<double>(*at_ - std::chrono::steady_clock::now()).count();
+        return std::max(left, 0.001);
+    }
+
+private:
+    std::optional<std::chrono::steady_clock::time_point> at_;
+};
+
+}  // namespace envdesign::design

@@ -1,0 +1,204 @@
+#include "design/design_search.h"
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <numeric>
+
+namespace envdesign::design {
+namespace {
+
+// Advances `c` (ascending indices below n) to the next k-subset in lexicographic order;
+// false after the last one.
+bool next_combination(std::vector<int> &c, int n) {
+    int k = static_cast<int>(c.size());
+    for (int i = k - 1; i >= 0; --i) {
+        if (c[i] < n - k + i) {
+            ++c[i];
+            for (int j = i + 1; j < k; ++j)
+                c[j] = c[j - 1] + 1;
+            return true;
+        }
+    }
+    return false;
+}
+
+long long saturating_add(long long a, long long b) { return a > LLONG_MAX - b ? LLONG_MAX : a + b; }
+
+class Search {
+public:
+    Search(const DesignProblem &problem, Evaluator &evaluator, const DesignSearchOptions &options,
+           const std::function<void(const SearchProgress &)> &progress)
+        : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress) {
+        if (options.candidates) {
+            candidates_ = *options.candidates;
+        } else {
+            candidates_.resize(problem.modifications.size());
+            std::iota(candidates_.begin(), candidates_.end(), 0);
+        }
+        int m = static_cast<int>(candidates_.size());
+        max_size_ = options.max_design_size > 0 ? std::min(options.max_design_size, m) : m;
+        std::vector<double> costs;
+        for (int c : candidates_)
+            costs.push_back(problem.modifications[c].cost);
+        std::sort(costs.begin(), costs.end());
+        cheapest_.push_back(0);  // cheapest_[k]: the least C over k-subsets
+        for (double c : costs)
+            cheapest_.push_back(cheapest_.back() + c);
+    }
+
+    DesignResult run() {
+        auto start = std::chrono::steady_clock::now();
+        auto &counters = result_.counters;
+        counters.modifications_pruned =
+            static_cast<long long>(problem_.modifications.size() - candidates_.size());
+        for (int k = 0; k <= max_size_; ++k)
+            counters.configurations_total =
+                saturating_add(counters.configurations_total, binomial(candidates_.size(), k));
+        bool interrupted = false;
+        for (int k = 0; k <= max_size_ && !interrupted; ++k) {
+            if (sizes_excluded_from(k)) {
+                for (int j = k; j <= max_size_; ++j)
+                    skip(binomial(candidates_.size(), j));
+                break;
+            }
+            interrupted = !enumerate_size(k);
+        }
+        result_.limit_reached = interrupted || limit_seen_;
+        result_.optimal = !result_.limit_reached && counters.modifications_pruned == 0;
+        counters.evaluator = evaluator_.counters();
+        counters.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        report();
+        return std::move(result_);
+    }
+
+private:
+    // True when no subset of size k or more can beat the best design found.
+    bool sizes_excluded_from(int k) const {
+        if (!result_.best)
+            return false;
+        double least = *std::min_element(cheapest_.begin() + k, cheapest_.begin() + max_size_ + 1);
+        return clearly_greater(objective_lower_bound(problem_, least, {}), result_.best->objective.value);
+    }
+
+    // Evaluates the k-subsets; false if the deadline stopped it.
+    bool enumerate_size(int k) {
+        std::vector<int> combination(k);
+        std::iota(combination.begin(), combination.end(), 0);
+        std::vector<Configuration> batch;
+        do {
+            if (options_.deadline.expired())
+                return false;
+            Configuration configuration;
+            for (int i : combination)
+                configuration.push_back(candidates_[i]);
+            if (cannot_win(configuration, {})) {
+                skip(1);
+                continue;
+            }
+            batch.push_back(std::move(configuration));
+            if (static_cast<int>(batch.size()) >= std::max(1, options_.batch_size))
+                flush(batch);
+        } while (next_combination(combination, static_cast<int>(candidates_.size())));
+        flush(batch);
+        return true;
+    }
+
+    bool cannot_win(const Configuration &configuration,
+                    const std::vector<const TaskExplicability *> &known) const {
+        if (!result_.best)
+            return false;
+        double bound = objective_lower_bound(problem_, design_cost(problem_, configuration), known);
+        return clearly_greater(bound, result_.best->objective.value);
+    }
+
+    void flush(std::vector<Configuration> &batch) {
+        if (batch.empty())
+            return;
+        EvaluationCallbacks callbacks;
+        callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
+            std::vector<const TaskExplicability *> known;
+            for (const auto &t : partial.tasks)
+                known.push_back(t ? &*t : nullptr);
+            return cannot_win(partial.configuration, known);
+        };
+        callbacks.done = [&](ConfigurationEvaluation e) { collect(std::move(e)); };
+        evaluator_.evaluate(batch, options_.deadline, callbacks);
+        batch.clear();
+    }
+
+    void collect(ConfigurationEvaluation e) {
+        auto &counters = result_.counters;
+        if (e.status == EvaluationStatus::LIMIT) {
+            limit_seen_ = true;
+            return;
+        }
+        ++done_;
+        if (e.status == EvaluationStatus::CUT_OFF) {
+            ++counters.configurations_abandoned;
+            report();
+            return;
+        }
+        ++counters.configurations_evaluated;
+        EvaluatedDesign design;
+        double cost = design_cost(problem_, e.configuration);
+        for (auto &t : e.tasks)
+            design.tasks.push_back(std::move(*t));
+        design.objective = objective_of(problem_, cost, design.tasks);
+        design.ranked = {design.objective.value, cost, e.configuration};
+        if (e.configuration.empty())
+            result_.baseline = design;
+        if (!result_.best || ranks_before(design.ranked, result_.best->ranked))
+            result_.best = std::move(design);
+        report();
+    }
+
+    void skip(long long count) {
+        result_.counters.configurations_skipped =
+            saturating_add(result_.counters.configurations_skipped, count);
+        done_ = saturating_add(done_, count);
+        report();
+    }
+
+    void report() const {
+        if (!progress_)
+            return;
+        EvaluatorCounters e = evaluator_.counters();
+        progress_({done_, result_.counters.configurations_total,
+                   result_.best ? result_.best->objective.value : INF, e.planner_runs,
+                   e.cache_hits});
+    }
+
+    const DesignProblem &problem_;
+    Evaluator &evaluator_;
+    const DesignSearchOptions &options_;
+    const std::function<void(const SearchProgress &)> &progress_;
+    std::vector<int> candidates_;
+    int max_size_ = 0;
+    std::vector<double> cheapest_;
+    DesignResult result_;
+    long long done_ = 0;
+    bool limit_seen_ = false;
+};
+
+}  // namespace
+
+long long binomial(long long n, long long k) {
+    if (k < 0 || k > n)
+        return 0;
+    k = std::min(k, n - k);
+    long double value = 1;
+    for (long long i = 1; i <= k; ++i)
+        value = value * static_cast<long double>(n - k + i) / static_cast<long double>(i);
+    return value >= static_cast<long double>(LLONG_MAX) ? LLONG_MAX
+                                                        : static_cast<long long>(value + 0.5L);
+}
+
+DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
+                           const DesignSearchOptions &options,
+                           const std::function<void(const SearchProgress &)> &progress) {
+    return Search(problem, evaluator, options, progress).run();
+}
+
+}  // namespace envdesign::design

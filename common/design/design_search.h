@@ -1,0 +1,77 @@
+#pragma once
+// The search over configurations (the paper's "Search for Optimal Design", made exact).
+//
+// Subsets of the candidate modifications are enumerated by size (0, 1, 2, ... up to
+// max_design_size), and within a size in spec order, so the first answer is the unmodified
+// environment and better designs follow while there is time. Configurations go to the
+// Evaluator in batches. Work is skipped only when it provably cannot change the answer:
+//   - a configuration whose design cost alone, with every IE at its least value (1, or 0 for
+//     COST_DIFF) and robot cost 0, already exceeds the best objective is not evaluated;
+//   - once the cheapest subset of the next sizes cannot beat the best, the search ends:
+//     design cost only grows with the subset when costs are non-negative (the bound takes the
+//     cheapest subset of every remaining size, so negative costs are safe too);
+//   - a configuration being evaluated is abandoned as soon as the tasks known so far, with
+//     the unknown ones at their least, exceed the best (Evaluator's `abandon`);
+//   - (in the evaluator) equal ground tasks are solved once (plan_cache.h).
+// The result is "optimal" only when every configuration was evaluated or skipped by these
+// bounds, no planner hit the time limit, and no modification was left out by --prune.
+
+#include "design/design_problem.h"
+#include "design/evaluator.h"
+#include "design/objective.h"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace envdesign::design {
+
+struct DesignSearchOptions {
+    int max_design_size = 0;  // 0: no limit
+    Deadline deadline;
+    // The modifications to combine (ascending indices); unset: all of them. --prune
+    // relevant narrows this (relevance.h).
+    std::optional<std::vector<int>> candidates;
+    int batch_size = 8;  // configurations per evaluate() call
+};
+
+struct SearchProgress {
+    long long done = 0;   // configurations evaluated, abandoned or skipped
+    long long total = 0;  // configurations in the search space
+    double best_objective = INF;
+    long long planner_runs = 0;
+    long long cache_hits = 0;
+};
+
+struct DesignCounters {
+    long long configurations_total = 0;      // subsets of the candidates up to the size limit
+    long long configurations_evaluated = 0;  // fully evaluated
+    long long configurations_abandoned = 0;  // dropped part-way by the bound
+    long long configurations_skipped = 0;    // never started: the bound excluded them
+    long long modifications_pruned = 0;      // left out by --prune relevant
+    EvaluatorCounters evaluator;
+    double seconds = 0;
+};
+
+struct EvaluatedDesign {
+    RankedDesign ranked;
+    Objective objective;
+    std::vector<TaskExplicability> tasks;
+};
+
+struct DesignResult {
+    bool optimal = false;        // proven optimal for the spec
+    bool limit_reached = false;  // the deadline stopped the search
+    std::optional<EvaluatedDesign> best;      // unset only if not even {} was evaluated
+    std::optional<EvaluatedDesign> baseline;  // the empty design
+    DesignCounters counters;
+};
+
+DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
+                           const DesignSearchOptions &options,
+                           const std::function<void(const SearchProgress &)> &progress = {});
+
+// C(n, k), saturating at the largest long long.
+long long binomial(long long n, long long k);
+
+}  // namespace envdesign::design

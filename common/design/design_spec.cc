@@ -1,0 +1,166 @@
+#include "design/design_spec.h"
+
+#include "design/compilation.h"
+#include "design/spec_checks.h"
+#include "pddl/parser.h"
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+
+namespace envdesign::design {
+namespace {
+
+using pddl::ParseError;
+namespace fs = std::filesystem;
+
+class Loader {
+public:
+    explicit Loader(const SpecFile &spec) : spec_(spec), m_(spec.message) {}
+
+    DesignProblem load() {
+        problem_.file = spec_.path;
+        load_domains();
+        load_tasks();
+        load_weights();
+        load_modifications();
+        check_design_problem(problem_, spec_);
+        return std::move(problem_);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string &field, const std::string &message) const {
+        throw ParseError(spec_.at(field), message);
+    }
+
+    std::string resolve(const std::string &field, const std::string &relative) const {
+        if (relative.empty())
+            fail(field, "'" + field + "' is required");
+        fs::path path = fs::path(relative).is_absolute()
+                            ? fs::path(relative)
+                            : fs::path(spec_.path).parent_path() / relative;
+        if (!fs::is_regular_file(path))
+            fail(field, "cannot open '" + relative + "' (" + field + ", looked for " +
+                            path.string() + ")");
+        return path.string();
+    }
+
+    // A PDDL error names the PDDL file; the note says which line of the spec led there.
+    template <typename Load>
+    auto load_pddl(const std::string &field, Load load) const {
+        try {
+            return load();
+        } catch (const ParseError &e) {
+            throw ParseError(e.location(), e.message() + "\n" + spec_.at(field).to_string() +
+                                               ": note: in the file named by " + field);
+        }
+    }
+
+    void load_domains() {
+        std::string robot = resolve("robot_domain", m_.robot_domain());
+        problem_.robot_domain = load_pddl("robot_domain", [&] { return pddl::parse_domain_file(robot); });
+        if (m_.human_domain().empty()) {
+            problem_.human_domain = problem_.robot_domain;
+            return;
+        }
+        std::string human = resolve("human_domain", m_.human_domain());
+        problem_.human_domain = load_pddl("human_domain", [&] { return pddl::parse_domain_file(human); });
+    }
+
+    void load_tasks() {
+        if (m_.task_size() == 0)
+            fail("", "the design problem has no task");
+        std::set<std::string> names;
+        double total = 0;
+        for (int i = 0; i < m_.task_size(); ++i) {
+            const auto &t = m_.task(i);
+            std::string at = "task[" + std::to_string(i) + "]";
+            if (t.name().empty())
+                fail(at, "a task needs a name");
+            if (!names.insert(t.name()).second)
+                fail(at + ".name", "duplicate task name '" + t.name() + "'");
+            DesignTask task;
+            task.name = t.name();
+            task.probability = t.has_probability() ? t.probability() : 1.0;
+            if (!(task.probability >= 0) || !std::isfinite(task.probability))
+                fail(at + ".probability", "the probability of task '" + t.name() +
+                                              "' must be a non-negative number");
+            total += task.probability;
+            std::string file = resolve(at + ".problem", t.problem());
+            task.robot_problem = load_pddl(at + ".problem", [&] {
+                return pddl::parse_problem_file(file, problem_.robot_domain);
+            });
+            std::string human_field = at + (t.human_problem().empty() ? ".problem" : ".human_problem");
+            std::string human_file =
+                t.human_problem().empty() ? file : resolve(human_field, t.human_problem());
+            task.human_problem = load_pddl(human_field, [&] {
+                return pddl::parse_problem_file(human_file, problem_.human_domain);
+            });
+            problem_.tasks.push_back(std::move(task));
+        }
+        if (total <= 0)
+            fail("task[0].probability", "the task probabilities sum to zero");
+        for (auto &task : problem_.tasks)
+            task.probability /= total;
+    }
+
+    void load_weights() {
+        ObjectiveWeights &w = problem_.weights;
+        auto weight = [&](bool has, double value, double fallback, const char *field) {
+            double v = has ? value : fallback;
+            if (!(v >= 0) || !std::isfinite(v))
+                fail(field, std::string(field) + " must be a non-negative number");
+            return v;
+        };
+        w.alpha = weight(m_.has_alpha(), m_.alpha(), 1, "alpha");
+        w.beta = weight(m_.has_beta(), m_.beta(), 1, "beta");
+        w.kappa = weight(m_.has_kappa(), m_.kappa(), 1, "kappa");
+        w.gamma = weight(m_.has_gamma(), m_.gamma(), 1, "gamma");
+        if (w.gamma > 1)
+            fail("gamma", "gamma must be in [0, 1]");
+        w.horizon = m_.has_horizon() ? m_.horizon() : 1;
+        if (w.horizon < 1)
+            fail("horizon", "horizon must be at least 1");
+        w.distance = m_.distance() == proto::DesignProblem::COST_DIFF ? Distance::COST_DIFF
+                                                                       : Distance::EXP_COST_DIFF;
+        if (m_.max_design_size() < 0)
+            fail("max_design_size", "max_design_size must be >= 0");
+        problem_.max_design_size = m_.max_design_size();
+        if (!(m_.time_limit_s() >= 0))
+            fail("time_limit_s", "time_limit_s must be >= 0");
+        problem_.time_limit_s = m_.time_limit_s();
+    }
+
+    void load_modifications() {
+        std::set<std::string> names;
+        for (int i = 0; i < m_.modification_size(); ++i) {
+            const auto &m = m_.modification(i);
+            std::string at = "modification[" + std::to_string(i) + "]";
+            if (m.name().empty())
+                fail(at, "a modification needs a name");
+            if (!names.insert(m.name()).second)
+                fail(at + ".name", "duplicate modification name '" + m.name() + "'");
+            if (!std::isfinite(m.cost()))
+                fail(at + ".cost", "the cost of modification '" + m.name() + "' is not finite");
+            Modification modification{m.name(), m.cost(), {}};
+            for (int j = 0; j < m.edit_size(); ++j)
+                modification.edits.push_back(
+                    edit_from_proto(m.edit(j), at + ".edit[" + std::to_string(j) + "]", spec_));
+            problem_.modifications.push_back(std::move(modification));
+        }
+    }
+
+    const SpecFile &spec_;
+    const proto::DesignProblem &m_;
+    DesignProblem problem_;
+};
+
+}  // namespace
+
+DesignProblem load_design_problem(const SpecFile &spec) { return Loader(spec).load(); }
+
+DesignProblem load_design_problem(const std::string &spec_path) {
+    return load_design_problem(read_spec_file(spec_path));
+}
+
+}  // namespace envdesign::design

@@ -1,0 +1,59 @@
+#pragma once
+// The boundary between the design search (the coordinator) and the planners.
+//
+// The search hands batches of configurations to an Evaluator and gets back, for each, the
+// explicability of every task. How the work is done is the evaluator's business: the
+// in-process LocalEvaluator (local_evaluator.h) runs N planner threads over a shared
+// content-addressed plan cache; an evaluator speaking to planner services over LCM (issue 5)
+// implements the same interface, and the search does not change.
+//
+// The search keeps control of what is worth evaluating: before each task of a configuration
+// is started and after each one finishes, the evaluator asks `abandon` whether the
+// configuration can still win; if not, it drops the rest (status CUT_OFF). Both callbacks
+// run on the thread that called evaluate(), never concurrently.
+
+#include "design/configuration.h"
+#include "design/deadline.h"
+#include "design/explicability.h"
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace envdesign::design {
+
+enum class EvaluationStatus {
+    COMPLETE,  // every task evaluated
+    CUT_OFF,   // abandoned: proven not to win
+    LIMIT,     // the deadline passed before every task was evaluated
+};
+
+struct ConfigurationEvaluation {
+    Configuration configuration;
+    EvaluationStatus status = EvaluationStatus::LIMIT;
+    std::vector<std::optional<TaskExplicability>> tasks;  // per task of the spec; unset: not evaluated
+};
+
+struct EvaluationCallbacks {
+    std::function<bool(const ConfigurationEvaluation &partial)> abandon;
+    std::function<void(ConfigurationEvaluation evaluation)> done;
+};
+
+struct EvaluatorCounters {
+    long long task_evaluations = 0;  // (configuration, task) pairs evaluated
+    long long planner_runs = 0;
+    long long cache_hits = 0;
+    double planner_seconds = 0;
+};
+
+class Evaluator {
+public:
+    virtual ~Evaluator();
+    // Evaluates every configuration of `batch` (or abandons it, or runs out of time) and
+    // calls callbacks.done once for each, in completion order, before returning.
+    virtual void evaluate(const std::vector<Configuration> &batch, const Deadline &deadline,
+                          const EvaluationCallbacks &callbacks) = 0;
+    virtual EvaluatorCounters counters() const = 0;
+};
+
+}  // namespace envdesign::design

@@ -1,0 +1,63 @@
+#include "design/explicability.h"
+
+#include "design/compilation.h"
+#include "ground/grounder.h"
+
+#include <cmath>
+
+namespace envdesign::design {
+namespace {
+
+double as_cost(long long cost) { return static_cast<double>(cost); }
+
+std::optional<double> human_optimum(const ModelPair &models, PlanCache &planner,
+                                    const Deadline &deadline, bool *limit) {
+    PlanOutcome human =
+        planner.solve(ground::ground(models.human_domain, models.human_problem), deadline);
+    *limit = human.status == PlanStatus::LIMIT;
+    if (human.status == PlanStatus::SOLVED)
+        return as_cost(human.cost);
+    if (human.status == PlanStatus::UNSOLVABLE)
+        return INF;
+    return std::nullopt;
+}
+
+}  // namespace
+
+double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance) {
+    if (std::isinf(human_plan_cost) || std::isinf(human_optimal_cost))
+        return INF;
+    double difference = std::abs(human_plan_cost - human_optimal_cost);
+    return distance == Distance::COST_DIFF ? difference : std::exp(difference);
+}
+
+TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
+                                         PlanCache &planner, const Deadline &deadline,
+                                         bool solve_human_anyway) {
+    TaskExplicability result;
+    CompiledTask compiled = compile_explicable(models);
+    PlanOutcome explicable =
+        planner.solve(ground::ground(compiled.domain, compiled.problem), deadline);
+    if (explicable.status == PlanStatus::LIMIT)
+        return result;
+    bool limit = false;
+    if (explicable.status == PlanStatus::UNSOLVABLE) {
+        result.status = ExplicabilityStatus::INEXPLICABLE;
+        if (solve_human_anyway)
+            result.human_optimal_cost = human_optimum(models, planner, deadline, &limit);
+        return result;
+    }
+    result.human_optimal_cost = human_optimum(models, planner, deadline, &limit);
+    if (limit)
+        return TaskExplicability{};
+    result.human_plan_cost = as_cost(explicable.cost);
+    result.robot_cost = as_cost(explicable.secondary_cost);
+    result.plan = std::move(explicable.plan);
+    result.ie = inexplicability(result.human_plan_cost, *result.human_optimal_cost, distance);
+    // P_H has no plan although P_mod has one only if the models contradict the compilation.
+    result.status = std::isinf(result.ie) ? ExplicabilityStatus::INEXPLICABLE
+                                          : ExplicabilityStatus::SOLVED;
+    return result;
+}
+
+}  // namespace envdesign::design

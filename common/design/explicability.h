@@ -1,0 +1,52 @@
+#pragma once
+// The explicability of one task under one configuration (SPEC.md, "The model"):
+//   pi   = an optimal plan of P_mod (compilation.h): a most explicable plan, and among
+//          those the cheapest for the robot;
+//   c_H* = the optimal cost of P_H;
+//   IE   = exp(|c_H(pi) - c_H*|) (EXP_COST_DIFF) or |c_H(pi) - c_H*| (COST_DIFF);
+//          infinite when P_mod has no plan (then P_H is not solved: IE is known).
+//
+// Example:
+//   PlanCache planner(planning::PlannerOptions{});
+//   TaskExplicability e = evaluate_explicability(models, Distance::EXP_COST_DIFF, planner, {});
+
+#include "design/configuration.h"
+#include "design/deadline.h"
+#include "design/design_problem.h"
+#include "design/plan_cache.h"
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envdesign::design {
+
+inline constexpr double INF = std::numeric_limits<double>::infinity();
+
+enum class ExplicabilityStatus {
+    SOLVED,        // a most explicable plan was found
+    INEXPLICABLE,  // P_mod (or P_H) has no plan: IE is infinite
+    LIMIT,         // the deadline passed first: nothing is known
+};
+
+struct TaskExplicability {
+    ExplicabilityStatus status = ExplicabilityStatus::LIMIT;
+    double ie = INF;
+    double robot_cost = INF;        // c_R(pi)
+    double human_plan_cost = INF;   // c_H(pi)
+    std::optional<double> human_optimal_cost;  // c_H*; INF if P_H has no plan; unset if not solved
+    std::vector<std::string> plan;  // pi, "(move c00 c10)" ...
+};
+
+// IE from the two human costs.
+double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance);
+
+// Compiles and grounds P_mod and P_H of `models` and plans both through `planner`.
+// `solve_human_anyway`: also solve P_H when P_mod has no plan (for reporting c_H*).
+// Throws pddl::ParseError if the models cannot be compiled or grounded.
+TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
+                                         PlanCache &planner, const Deadline &deadline,
+                                         bool solve_human_anyway = false);
+
+}  // namespace envdesign::design

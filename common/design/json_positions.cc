@@ -1,0 +1,133 @@
+#include "design/json_positions.h"
+
+#include <cctype>
+
+namespace envdesign::design {
+namespace {
+
+// A walk over well-formed JSON that records positions; values are skipped, not decoded.
+class PositionScanner {
+public:
+    PositionScanner(const std::string &text, const std::string &file,
+                    std::map<std::string, pddl::Location> &out)
+        : text_(text), file_(file), out_(out) {}
+
+    void scan() {
+        skip_space();
+        value("");
+    }
+
+private:
+    bool at_end() const { return pos_ >= text_.size(); }
+    char peek() const { return at_end() ? '\0' : text_[pos_]; }
+    pddl::Location here() const { return {file_, line_, column_}; }
+
+    void advance() {
+        if (text_[pos_] == '\n') {
+            ++line_;
+            column_ = 1;
+        } else if ((static_cast<unsigned char>(text_[pos_]) & 0xC0) != 0x80) {
+            ++column_;  // count UTF-8 characters, not bytes
+        }
+        ++pos_;
+    }
+
+    void skip_space() {
+        while (!at_end() && std::isspace(static_cast<unsigned char>(peek())))
+            advance();
+    }
+
+    void value(const std::string &path) {
+        if (peek() == '{')
+            object(path);
+        else if (peek() == '[')
+            array(path);
+        else if (peek() == '"')
+            string();
+        else
+            while (!at_end() && std::string_view(",]} \t\r\n").find(peek()) == std::string::npos)
+                advance();
+    }
+
+    std::string string() {
+        std::string s;
+        advance();  // '"'
+        while (!at_end() && peek() != '"') {
+            if (peek() == '\\')
+                advance();
+            s += peek();
+            advance();
+        }
+        if (!at_end())
+            advance();
+        return s;
+    }
+
+    void object(const std::string &path) {
+        advance();  // '{'
+        for (skip_space(); !at_end() && peek() != '}'; skip_space()) {
+            if (peek() == ',') {
+                advance();
+                continue;
+            }
+            pddl::Location where = here();
+            std::string key = snake_case(string());
+            std::string child = path.empty() ? key : path + "." + key;
+            out_.emplace(child, where);
+            skip_space();
+            if (peek() == ':')
+                advance();
+            skip_space();
+            value(child);
+        }
+        if (!at_end())
+            advance();
+    }
+
+    void array(const std::string &path) {
+        advance();  // '['
+        int index = 0;
+        for (skip_space(); !at_end() && peek() != ']'; skip_space()) {
+            if (peek() == ',') {
+                advance();
+                continue;
+            }
+            std::string element = path + "[" + std::to_string(index++) + "]";
+            out_.emplace(element, here());
+            value(element);
+        }
+        if (!at_end())
+            advance();
+    }
+
+    const std::string &text_;
+    std::string file_;
+    std::map<std::string, pddl::Location> &out_;
+    std::size_t pos_ = 0;
+    int line_ = 1;
+    int column_ = 1;
+};
+
+}  // namespace
+
+std::string snake_case(const std::string &name) {
+    std::string out;
+    for (char c : name) {
+        if (std::isupper(static_cast<unsigned char>(c))) {
+            out += '_';
+            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+std::map<std::string, pddl::Location> index_json_positions(const std::string &text,
+                                                           const std::string &file) {
+    std::map<std::string, pddl::Location> out;
+    PositionScanner(text, file, out).scan();
+    return out;
+}
+
+}  // namespace envdesign::design

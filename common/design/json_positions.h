@@ -1,0 +1,21 @@
+#pragma once
+// Where each key of a JSON document is written, for error messages about spec files in
+// protobuf's JSON mapping (protobuf's JSON parser keeps no positions).
+
+#include "pddl/parse_error.h"
+
+#include <map>
+#include <string>
+
+namespace envdesign::design {
+
+// Maps "task[1].human_problem"-style paths to the position of the key (or, for array
+// elements, of the element). Keys are converted to snake_case, so "humanProblem" and
+// "human_problem" give the same path. `text` must be well-formed JSON.
+std::map<std::string, pddl::Location> index_json_positions(const std::string &text,
+                                                           const std::string &file);
+
+// lowerCamelCase -> snake_case ("addPrecondition" -> "add_precondition").
+std::string snake_case(const std::string &name);
+
+}  // namespace envdesign::design

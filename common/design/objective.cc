@@ -1,0 +1,85 @@
+#include "design/objective.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace envdesign::design {
+namespace {
+
+double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
+
+double combine(const ObjectiveWeights &w, const ObjectiveTerms &t) {
+    return w.alpha * t.inexplicability + w.beta * t.design_cost + w.kappa * t.robot_cost;
+}
+
+}  // namespace
+
+double discounted_horizon(const ObjectiveWeights &weights) {
+    if (weights.gamma >= 1)
+        return weights.horizon;
+    return (1 - std::pow(weights.gamma, weights.horizon)) / (1 - weights.gamma);
+}
+
+Objective objective_of(const DesignProblem &problem, double design_cost,
+                       const std::vector<TaskExplicability> &tasks) {
+    std::vector<const TaskExplicability *> known;
+    for (const auto &t : tasks)
+        known.push_back(&t);
+    Objective out;
+    out.terms.design_cost = design_cost;
+    double expected_ie = 0, expected_cost = 0;
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+        double p = problem.tasks[i].probability;
+        if (p <= 0)
+            continue;
+        if (tasks[i].status != ExplicabilityStatus::SOLVED)
+            return out;  // infinite
+        expected_ie += p * tasks[i].ie;
+        expected_cost += p * tasks[i].robot_cost;
+    }
+    const ObjectiveWeights &w = problem.weights;
+    out.terms.inexplicability = expected_ie * discounted_horizon(w);
+    out.terms.robot_cost = w.horizon * expected_cost;
+    out.value = combine(w, out.terms);
+    return out;
+}
+
+double objective_lower_bound(const DesignProblem &problem, double design_cost,
+                             const std::vector<const TaskExplicability *> &known) {
+    const ObjectiveWeights &w = problem.weights;
+    double expected_ie = 0, expected_cost = 0;
+    for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
+        double p = problem.tasks[i].probability;
+        if (p <= 0)
+            continue;
+        const TaskExplicability *t = i < known.size() ? known[i] : nullptr;
+        if (t && t->status == ExplicabilityStatus::INEXPLICABLE)
+            return INF;
+        bool solved = t && t->status == ExplicabilityStatus::SOLVED;
+        expected_ie += p * (solved ? t->ie : least_ie(w.distance));
+        expected_cost += p * (solved ? t->robot_cost : 0.0);
+    }
+    ObjectiveTerms terms{expected_ie * discounted_horizon(w), design_cost,
+                         w.horizon * expected_cost};
+    return combine(w, terms);
+}
+
+bool nearly_equal(double a, double b) {
+    if (std::isinf(a) || std::isinf(b))
+        return a == b;
+    return std::abs(a - b) <= 1e-9 * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+bool clearly_greater(double a, double b) { return a > b && !nearly_equal(a, b); }
+
+bool ranks_before(const RankedDesign &a, const RankedDesign &b) {
+    if (!nearly_equal(a.objective, b.objective))
+        return a.objective < b.objective;
+    if (a.configuration.size() != b.configuration.size())
+        return a.configuration.size() < b.configuration.size();
+    if (!nearly_equal(a.design_cost, b.design_cost))
+        return a.design_cost < b.design_cost;
+    return a.configuration < b.configuration;
+}
+
+}  // namespace envdesign::design

@@ -1,0 +1,57 @@
+#pragma once
+// The design objective (SPEC.md, "The model"):
+//   objective(xi) = alpha * f_T(E_D[IE]) + beta * C(xi) + kappa * T * E_D[c_R(pi)],
+//   f_T(x) = x * (1 - gamma^T) / (1 - gamma), and T * x when gamma = 1.
+// A task of positive probability with infinite IE makes the objective infinite, whatever
+// the weights; tasks of probability 0 do not count.
+//
+// Ranking (ranks_before): lower objective, then fewer modifications, then lower C(xi), then
+// the earlier modifications in spec order. Objectives within a relative 1e-9 of each other
+// are equal, so that rounding in the sums cannot override the tie-breaking rules.
+
+#include "design/configuration.h"
+#include "design/explicability.h"
+
+#include <vector>
+
+namespace envdesign::design {
+
+struct ObjectiveTerms {
+    double inexplicability = INF;  // f_T(E[IE])
+    double design_cost = 0;        // C(xi)
+    double robot_cost = INF;       // T * E[c_R(pi)]
+};
+
+struct Objective {
+    double value = INF;
+    ObjectiveTerms terms;
+};
+
+// (1 - gamma^T) / (1 - gamma), or T when gamma = 1: f_T(x) = x * discounted_horizon.
+double discounted_horizon(const ObjectiveWeights &weights);
+
+// `tasks` holds one evaluation per task of `problem`, all SOLVED or INEXPLICABLE.
+Objective objective_of(const DesignProblem &problem, double design_cost,
+                       const std::vector<TaskExplicability> &tasks);
+
+// A lower bound on the objective when only some tasks are known (`known[i]` null: task i
+// not evaluated yet): unknown tasks count with the least IE the distance allows (1 or 0)
+// and robot cost 0. With no task known it bounds every configuration of that design cost.
+double objective_lower_bound(const DesignProblem &problem, double design_cost,
+                             const std::vector<const TaskExplicability *> &known);
+
+// a == b within a relative 1e-9 (infinities equal each other only).
+bool nearly_equal(double a, double b);
+// a > b and not nearly equal: b certainly ranks before anything whose objective is a.
+bool clearly_greater(double a, double b);
+
+struct RankedDesign {
+    double objective = INF;
+    double design_cost = 0;
+    Configuration configuration;
+};
+
+// The total order of SPEC.md's tie-breaking rules.
+bool ranks_before(const RankedDesign &a, const RankedDesign &b);
+
+}  // namespace envdesign::design

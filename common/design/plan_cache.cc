@@ -1,0 +1,81 @@
+#include "design/plan_cache.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace envdesign::design {
+
+PlanOutcome PlanCache::solve(const ground::GroundTask &task, const Deadline &deadline) {
+    ground::GroundTask canonical = canonicalize(task);
+    TaskKey key = key_of(canonical);
+    std::promise<PlanOutcome> promise;
+    std::shared_future<PlanOutcome> answer;
+    bool planner = false;
+    {
+        std::lock_guard lock(mutex_);
+        auto it = answers_.find(key);
+        if (it != answers_.end()) {
+            ++counters_.cache_hits;
+            answer = it->second;
+        } else {
+            ++counters_.planner_runs;
+            answer = promise.get_future().share();
+            answers_.emplace(key, answer);
+            planner = true;
+        }
+    }
+    if (!planner)
+        return answer.get();  // blocks while another thread plans the same task
+    PlanOutcome outcome;
+    try {
+        outcome = run_planner(canonical, deadline);
+    } catch (...) {
+        promise.set_exception(std::current_exception());
+        std::lock_guard lock(mutex_);
+        answers_.erase(key);
+        throw;
+    }
+    promise.set_value(outcome);
+    if (outcome.status == PlanStatus::LIMIT) {
+        std::lock_guard lock(mutex_);
+        answers_.erase(key);
+    }
+    return outcome;
+}
+
+CacheCounters PlanCache::counters() const {
+    std::lock_guard lock(mutex_);
+    return counters_;
+}
+
+PlanOutcome PlanCache::run_planner(const ground::GroundTask &canonical, const Deadline &deadline) {
+    auto start = std::chrono::steady_clock::now();
+    planning::PlannerOptions options = options_;
+    if (deadline.limited()) {
+        double left = deadline.remaining_seconds();
+        options.limits.time_limit_s =
+            options.limits.time_limit_s > 0 ? std::min(options.limits.time_limit_s, left) : left;
+    }
+    planning::PlanReport report = planning::plan_task(canonical, options);
+    PlanOutcome outcome;
+    if (report.status == search::SearchStatus::SOLVED) {
+        outcome.status = PlanStatus::SOLVED;
+        outcome.cost = report.cost;
+        outcome.plan = report.plan;
+        // Canonical operators are sorted by name, and a ground action's name is unique.
+        for (const auto &step : report.plan) {
+            auto it = std::lower_bound(canonical.operators.begin(), canonical.operators.end(), step,
+                                       [](const auto &op, const std::string &name) { return op.name < name; });
+            outcome.secondary_cost += it->secondary_cost;
+        }
+    } else {
+        outcome.status = report.status == search::SearchStatus::FAILED ? PlanStatus::UNSOLVABLE
+                                                                       : PlanStatus::LIMIT;
+    }
+    std::lock_guard lock(mutex_);
+    counters_.planner_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return outcome;
+}
+
+}  // namespace envdesign::design

@@ -1,0 +1,61 @@
+#include "design/progress.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace envdesign::design {
+namespace {
+
+std::string number(double value) {
+    if (std::isinf(value))
+        return "inf";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+    return buffer;
+}
+
+}  // namespace
+
+void ProgressPrinter::update(const SearchProgress &p) {
+    auto now = std::chrono::steady_clock::now();
+    bool last = p.done >= p.total;
+    if (!live_ || (!last && now - last_draw_ < std::chrono::milliseconds(100)))
+        return;
+    last_draw_ = now;
+    constexpr int WIDTH = 24;
+    int filled = p.total > 0 ? static_cast<int>(WIDTH * static_cast<double>(p.done) / p.total) : 0;
+    std::string bar(std::min(filled, WIDTH), '#');
+    bar.resize(WIDTH, '-');
+    double seconds = std::chrono::duration<double>(now - start_).count();
+    std::fprintf(out_, "\r[%s] %lld/%lld configurations | best %s | %lld planner runs | "
+                       "%lld cache hits | %.1fs\033[K",
+                 bar.c_str(), p.done, p.total, number(p.best_objective).c_str(), p.planner_runs,
+                 p.cache_hits, seconds);
+    std::fflush(out_);
+    drawn_ = true;
+}
+
+std::string ProgressPrinter::summary(const DesignResult &r) {
+    const DesignCounters &c = r.counters;
+    std::string line = "design: " + std::to_string(c.configurations_evaluated) + " of " +
+                       std::to_string(c.configurations_total) + " configurations evaluated, " +
+                       std::to_string(c.configurations_abandoned) + " abandoned and " +
+                       std::to_string(c.configurations_skipped) + " skipped by the bound";
+    if (c.modifications_pruned > 0)
+        line += ", " + std::to_string(c.modifications_pruned) + " modifications pruned";
+    line += "; " + std::to_string(c.evaluator.planner_runs) + " planner runs, " +
+            std::to_string(c.evaluator.cache_hits) + " cache hits; best " +
+            number(r.best ? r.best->objective.value : INF) + " (" +
+            (r.optimal ? "optimal" : "best found") + ") in " + number(c.seconds) + " s";
+    return line;
+}
+
+void ProgressPrinter::finish(const DesignResult &result) {
+    if (drawn_)
+        std::fprintf(out_, "\r\033[K");
+    std::fprintf(out_, "%s\n", summary(result).c_str());
+    std::fflush(out_);
+}
+
+}  // namespace envdesign::design

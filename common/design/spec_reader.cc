@@ -1,0 +1,191 @@
+#include "design/spec_reader.h"
+
+#include "design/json_positions.h"
+
+#include <google/protobuf/io/tokenizer.h>
+#include <google/protobuf/text_format.h>
+#include <google/protobuf/util/json_util.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace envdesign::design {
+namespace {
+
+namespace gp = google::protobuf;
+
+struct PathStep {
+    std::string field;
+    int index = -1;  // -1: a singular field
+};
+
+std::vector<PathStep> split_path(const std::string &path) {
+    std::vector<PathStep> steps;
+    std::stringstream in(path);
+    std::string part;
+    while (std::getline(in, part, '.')) {
+        PathStep step{part, -1};
+        if (auto open = part.find('['); open != std::string::npos) {
+            step.field = part.substr(0, open);
+            step.index = std::stoi(part.substr(open + 1));
+        }
+        steps.push_back(step);
+    }
+    return steps;
+}
+
+// Text format: protobuf's ParseInfoTree, walked along the message's descriptors.
+class TextLocations : public SpecLocations {
+public:
+    explicit TextLocations(std::string file) : file_(std::move(file)) {}
+    gp::TextFormat::ParseInfoTree &tree() { return tree_; }
+
+    pddl::Location locate(const std::string &path) const override {
+        pddl::Location best{file_, 1, 1};
+        const gp::Descriptor *type = proto::DesignProblem::descriptor();
+        const gp::TextFormat::ParseInfoTree *tree = &tree_;
+        for (const PathStep &step : split_path(path)) {
+            const gp::FieldDescriptor *field = type ? type->FindFieldByName(step.field) : nullptr;
+            if (!field || !tree)
+                break;
+            auto where = tree->GetLocation(field, field->is_repeated() ? step.index : -1);
+            if (where.line < 0)
+                break;
+            best = {file_, where.line + 1, where.column + 1};
+            type = field->message_type();
+            tree = type ? tree->GetTreeForNested(field, field->is_repeated() ? step.index : -1)
+                        : nullptr;
+        }
+        return best;
+    }
+
+private:
+    std::string file_;
+    gp::TextFormat::ParseInfoTree tree_;
+};
+
+// JSON: the positions of keys found by index_json_positions.
+class JsonLocations : public SpecLocations {
+public:
+    JsonLocations(std::string file, std::map<std::string, pddl::Location> positions)
+        : file_(std::move(file)), positions_(std::move(positions)) {}
+
+    pddl::Location locate(const std::string &path) const override {
+        for (std::string p = path; !p.empty();) {
+            if (auto it = positions_.find(p); it != positions_.end())
+                return it->second;
+            auto cut = p.find_last_of(".[");
+            p = cut == std::string::npos ? "" : p.substr(0, cut);
+        }
+        return {file_, 1, 1};
+    }
+
+    // The first key named `name` anywhere in the file, for protobuf's "NAME: Cannot find
+    // field." messages that carry no path.
+    pddl::Location locate_key(const std::string &name) const {
+        for (const auto &[path, where] : positions_) {
+            auto dot = path.find_last_of('.');
+            if (path.substr(dot == std::string::npos ? 0 : dot + 1) == snake_case(name))
+                return where;
+        }
+        return {file_, 1, 1};
+    }
+
+private:
+    std::string file_;
+    std::map<std::string, pddl::Location> positions_;
+};
+
+class FirstError : public gp::io::ErrorCollector {
+public:
+    explicit FirstError(std::string file) : file_(std::move(file)) {}
+
+    void AddError(int line, gp::io::ColumnNumber column, const std::string &message) override {
+        if (!error_)
+            error_ = pddl::ParseError({file_, line + 1, column + 1}, message);
+    }
+    const std::optional<pddl::ParseError> &error() const { return error_; }
+
+private:
+    std::string file_;
+    std::optional<pddl::ParseError> error_;
+};
+
+bool ends_with(const std::string &s, const std::string &suffix) {
+    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+pddl::Location location_of_byte(const std::string &text, std::size_t byte, const std::string &file) {
+    pddl::Location where{file, 1, 1};
+    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+        if (text[i] == '\n') {
+            ++where.line;
+            where.column = 1;
+        } else {
+            ++where.column;
+        }
+    }
+    return where;
+}
+
+SpecFile read_json(const std::string &text, const std::string &path) {
+    try {
+        auto parsed = nlohmann::json::parse(text);  // only for the position of a syntax error
+        (void)parsed;
+    } catch (const nlohmann::json::parse_error &e) {
+        std::string message = e.what();
+        auto colon = message.find(": ", message.find("syntax error"));
+        throw pddl::ParseError(location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
+                               "malformed JSON: " + (colon == std::string::npos
+                                                         ? message
+                                                         : message.substr(colon + 2)));
+    }
+    auto locations = std::make_unique<JsonLocations>(path, index_json_positions(text, path));
+    SpecFile spec{path, {}, nullptr};
+    auto status = gp::util::JsonStringToMessage(text, &spec.message);
+    if (!status.ok()) {
+        std::string message(status.message());
+        auto colon = message.find(':');
+        std::string key = colon == std::string::npos ? "" : message.substr(0, colon);
+        throw pddl::ParseError(locations->locate_key(key), message);
+    }
+    spec.locations = std::move(locations);
+    return spec;
+}
+
+SpecFile read_text(const std::string &text, const std::string &path) {
+    auto locations = std::make_unique<TextLocations>(path);
+    FirstError errors(path);
+    gp::TextFormat::Parser parser;
+    parser.RecordErrorsTo(&errors);
+    parser.WriteLocationsTo(&locations->tree());
+    SpecFile spec{path, {}, nullptr};
+    if (!parser.ParseFromString(text, &spec.message)) {
+        if (errors.error())
+            throw *errors.error();
+        throw pddl::ParseError({path, 1, 1}, "malformed design problem file");
+    }
+    spec.locations = std::move(locations);
+    return spec;
+}
+
+}  // namespace
+
+SpecLocations::~SpecLocations() = default;
+
+SpecFile read_spec_text(const std::string &text, const std::string &path) {
+    return ends_with(path, ".json") ? read_json(text, path) : read_text(text, path);
+}
+
+SpecFile read_spec_file(const std::string &path) {
+    std::ifstream in(path);
+    if (!in)
+        throw pddl::ParseError({path, 0, 0}, "cannot open file");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return read_spec_text(buffer.str(), path);
+}
+
+}  // namespace envdesign::design
