@@ -93,8 +93,9 @@ int run_design(const DesignFlags &flags) {
     planner.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
     design::LocalEvaluator evaluator(problem, flags.workers, planner);
     if (flags.prune == "relevant")
-        options.candidates =
-            design::relevant_modifications(problem, evaluator.planner(), options.deadline);
+        options.relevant = [&](const design::Configuration &c) {
+            return design::relevant_modifications(problem, c, evaluator.planner(), options.deadline);
+        };
     design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     design::DesignResult result = design::search_design(
         problem, evaluator, options, [&](const design::SearchProgress &p) { printer.update(p); });

@@ -13,8 +13,11 @@
 //   - a configuration being evaluated is abandoned as soon as the tasks known so far, with
 //     the unknown ones at their least, exceed the best (Evaluator's `abandon`);
 //   - (in the evaluator) equal ground tasks are solved once (plan_cache.h).
+// With --prune relevant (options.relevant set) the search instead grows configurations
+// layer by layer, adding to each only the modifications relevant to its plans
+// (relevance.h); the same bounds apply.
 // The result is "optimal" only when every configuration was evaluated or skipped by these
-// bounds, no planner hit the time limit, and no modification was left out by --prune.
+// bounds, no planner hit the time limit, and the pruning left no configuration out.
 
 #include "design/design_problem.h"
 #include "design/evaluator.h"
@@ -29,26 +32,26 @@ namespace envdesign::design {
 struct DesignSearchOptions {
     int max_design_size = 0;  // 0: no limit
     Deadline deadline;
-    // The modifications to combine (ascending indices); unset: all of them. --prune
-    // relevant narrows this (relevance.h).
-    std::optional<std::vector<int>> candidates;
+    // --prune relevant: the modifications worth adding to a configuration (relevance.h);
+    // empty: every subset is a candidate (exact).
+    std::function<std::vector<int>(const Configuration &)> relevant;
     int batch_size = 8;  // configurations per evaluate() call
 };
 
 struct SearchProgress {
     long long done = 0;   // configurations evaluated, abandoned or skipped
-    long long total = 0;  // configurations in the search space
+    long long total = 0;  // configurations in the search space (with --prune: generated so far)
     double best_objective = INF;
     long long planner_runs = 0;
     long long cache_hits = 0;
 };
 
 struct DesignCounters {
-    long long configurations_total = 0;      // subsets of the candidates up to the size limit
+    long long configurations_total = 0;      // subsets of the modifications up to the size limit
     long long configurations_evaluated = 0;  // fully evaluated
     long long configurations_abandoned = 0;  // dropped part-way by the bound
     long long configurations_skipped = 0;    // never started: the bound excluded them
-    long long modifications_pruned = 0;      // left out by --prune relevant
+    long long configurations_pruned = 0;     // never generated: --prune relevant left them out
     EvaluatorCounters evaluator;
     double seconds = 0;
 };

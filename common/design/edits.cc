@@ -146,6 +146,12 @@ void remove_instance(const Edit &edit, pddl::Domain &domain, pddl::Problem &prob
     pddl::Action *action = find_action(domain, named, mode);
     if (!action)
         return;
+    if (e.items.size() - 1 != action->parameters.size())
+        throw ParseError(edit.location, "'" + action->name + "' takes " +
+                                            std::to_string(action->parameters.size()) +
+                                            " argument(s) but is given " +
+                                            std::to_string(e.items.size() - 1) + " " +
+                                            context_of(edit));
     pddl::Predicate guard{"removed~" + action->name, action->parameters, edit.location};
     if (!domain.find_predicate(guard.name))
         domain.predicates.push_back(guard);

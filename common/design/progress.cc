@@ -42,8 +42,8 @@ std::string ProgressPrinter::summary(const DesignResult &r) {
                        std::to_string(c.configurations_total) + " configurations evaluated, " +
                        std::to_string(c.configurations_abandoned) + " abandoned and " +
                        std::to_string(c.configurations_skipped) + " skipped by the bound";
-    if (c.modifications_pruned > 0)
-        line += ", " + std::to_string(c.modifications_pruned) + " modifications pruned";
+    if (c.configurations_pruned > 0)
+        line += ", " + std::to_string(c.configurations_pruned) + " pruned as irrelevant";
     line += "; " + std::to_string(c.evaluator.planner_runs) + " planner runs, " +
             std::to_string(c.evaluator.cache_hits) + " cache hits; best " +
             number(r.best ? r.best->objective.value : INF) + " (" +

@@ -78,11 +78,12 @@ bool touches(const Edit &edit, const Touched &touched) {
 
 }  // namespace
 
-std::vector<int> relevant_modifications(const DesignProblem &problem, PlanCache &planner,
+std::vector<int> relevant_modifications(const DesignProblem &problem,
+                                        const Configuration &configuration, PlanCache &planner,
                                         const Deadline &deadline) {
     Touched touched;
     for (std::size_t t = 0; t < problem.tasks.size(); ++t) {
-        ModelPair models = base_models(problem, static_cast<int>(t));
+        ModelPair models = configured_models(problem, configuration, static_cast<int>(t));
         add_optimal_plan(models.robot_domain, models.robot_problem, planner, deadline, touched);
         add_optimal_plan(models.human_domain, models.human_problem, planner, deadline, touched);
     }

@@ -85,7 +85,7 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
     out["configurations_total"] = c.configurations_total;
     out["configurations_abandoned"] = c.configurations_abandoned;
     out["configurations_skipped"] = c.configurations_skipped;
-    out["modifications_pruned"] = c.modifications_pruned;
+    out["configurations_pruned"] = c.configurations_pruned;
     out["task_evaluations"] = c.evaluator.task_evaluations;
     out["cache_hits"] = c.evaluator.cache_hits;
     out["planner_seconds"] = c.evaluator.planner_seconds;

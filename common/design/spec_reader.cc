@@ -136,11 +136,11 @@ SpecFile read_json(const std::string &text, const std::string &path) {
         (void)parsed;
     } catch (const nlohmann::json::parse_error &e) {
         std::string message = e.what();
-        auto colon = message.find(": ", message.find("syntax error"));
+        auto reason = message.find("syntax error");
         throw pddl::ParseError(location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
-                               "malformed JSON: " + (colon == std::string::npos
+                               "malformed JSON: " + (reason == std::string::npos
                                                          ? message
-                                                         : message.substr(colon + 2)));
+                                                         : message.substr(reason)));
     }
     auto locations = std::make_unique<JsonLocations>(path, index_json_positions(text, path));
     SpecFile spec{path, {}, nullptr};
