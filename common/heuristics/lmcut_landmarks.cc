@@ -3,6 +3,7 @@
 #include "heuristics/heuristic.h"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 
 namespace envdesign::heuristics {
@@ -10,9 +11,30 @@ namespace envdesign::heuristics {
 LmCutLandmarks::LmCutLandmarks(const ground::GroundTask &task)
     : relaxed_(task), ops_(relaxed_.num_operators()),
       num_preconditions_(relaxed_.num_operators()), prop_cost_(relaxed_.num_propositions()),
+      precondition_bit_(relaxed_.num_precondition_entries()),
       zone_(relaxed_.num_propositions(), 0) {
-    for (int op = 0; op < relaxed_.num_operators(); ++op)
-        num_preconditions_[op] = static_cast<int>(relaxed_.preconditions(op).size());
+    for (int op = 0; op < relaxed_.num_operators(); ++op) {
+        std::span<const int> pre = relaxed_.preconditions(op);
+        num_preconditions_[op] = static_cast<int>(pre.size());
+        for (int i = 0; i < num_preconditions_[op]; ++i) {
+            std::span<const int> users = relaxed_.precondition_of(pre[i]);
+            int bit = static_cast<int>(std::find(users.begin(), users.end(), op) - users.begin());
+            precondition_bit_[relaxed_.precondition_offset(op) + i] = bit;
+        }
+    }
+    const int *users = relaxed_.precondition_of_items();
+    const int *eff_offsets = relaxed_.effect_offsets();
+    for (int i = 0; i < relaxed_.num_precondition_entries(); ++i) {
+        int op = users[i];
+        int begin = eff_offsets[op], end = eff_offsets[op + 1];
+        triggers_.push_back({op, begin < end ? relaxed_.effect_items()[begin] : -1, begin, end});
+    }
+    mask_offset_.push_back(0);
+    for (int prop = 0; prop < relaxed_.num_propositions(); ++prop) {
+        int users = static_cast<int>(relaxed_.precondition_of(prop).size());
+        mask_offset_.push_back(mask_offset_.back() + (users + 63) / 64);
+    }
+    masks_.assign(mask_offset_.back(), 0);
 }
 
 int LmCutLandmarks::compute(std::span<const ground::FactId> facts, const CutCallback &on_cut) {
@@ -45,12 +67,23 @@ int LmCutLandmarks::compute(std::span<const ground::FactId> facts, const CutCall
     return total;
 }
 
+template <class Visit>
+void LmCutLandmarks::for_each_supported(int prop, Visit visit) {
+    const std::span<const int> users = relaxed_.precondition_of(prop);
+    for (int w = mask_offset_[prop]; w < mask_offset_[prop + 1]; ++w) {
+        const int base = (w - mask_offset_[prop]) * 64;
+        for (std::uint64_t word = masks_[w]; word != 0; word &= word - 1)
+            visit(users[base + std::countr_zero(word)]);
+    }
+}
+
 void LmCutLandmarks::first_exploration(std::span<const ground::FactId> facts) {
     queue_.clear();
     std::fill(prop_cost_.begin(), prop_cost_.end(), UNREACHED);
+    std::fill(masks_.begin(), masks_.end(), 0);
     const int num_ops = relaxed_.num_operators();
     for (int op = 0; op < num_ops; ++op)
-        ops_[op] = {relaxed_.cost(op), num_preconditions_[op], -1, UNREACHED};
+        ops_[op] = {relaxed_.cost(op), num_preconditions_[op], -1, UNREACHED, 0};
     // FD queues a state's facts in variable order; the bucket queue is LIFO, so this order
     // decides which of several cost-0 preconditions becomes the supporter.
     ranked_facts_.assign(facts.begin(), facts.end());
@@ -64,11 +97,13 @@ void LmCutLandmarks::first_exploration(std::span<const ground::FactId> facts) {
         auto [cost, prop] = queue_.pop();
         if (cost > prop_cost_[prop])
             continue;
-        for (int op : relaxed_.precondition_of(prop)) {
+        std::span<const int> users = relaxed_.precondition_of(prop);
+        for (int k = 0; k < static_cast<int>(users.size()); ++k) {
+            const int op = users[k];
             OperatorData &data = ops_[op];
             if (--data.unsatisfied == 0) {
                 // The last precondition popped has the maximum cost: the supporter.
-                data.supporter = prop;
+                set_supporter(op, prop, k);
                 data.supporter_cost = cost;
                 int target = cost + data.cost;
                 for (int effect : relaxed_.effects(op))
@@ -94,10 +129,10 @@ void LmCutLandmarks::first_exploration_incremental() {
         auto [cost, prop] = queue_.pop();
         if (cost > prop_cost_[prop])
             continue;
-        for (int op : relaxed_.precondition_of(prop)) {
+        for_each_supported(prop, [&](int op) {
             OperatorData &data = ops_[op];
-            if (data.supporter != prop || data.supporter_cost <= cost)
-                continue;
+            if (data.supporter_cost <= cost)
+                return;
             int old_cost = data.supporter_cost;
             update_supporter(op);
             if (data.supporter_cost != old_cost) {
@@ -105,18 +140,35 @@ void LmCutLandmarks::first_exploration_incremental() {
                 for (int effect : relaxed_.effects(op))
                     enqueue_if_necessary(effect, target);
             }
-        }
+        });
     }
 }
 
 void LmCutLandmarks::update_supporter(int op) {
     OperatorData &data = ops_[op];
-    int best = data.supporter;
-    for (int pre : relaxed_.preconditions(op))
-        if (prop_cost_[pre] > prop_cost_[best])
-            best = pre;
-    data.supporter = best;
-    data.supporter_cost = prop_cost_[best];
+    std::span<const int> pre = relaxed_.preconditions(op);
+    int best = -1;
+    int best_cost = prop_cost_[data.supporter];
+    for (int i = 0; i < static_cast<int>(pre.size()); ++i) {
+        if (prop_cost_[pre[i]] > best_cost) {
+            best = i;
+            best_cost = prop_cost_[pre[i]];
+        }
+    }
+    if (best >= 0)
+        set_supporter(op, pre[best], precondition_bit_[relaxed_.precondition_offset(op) + best]);
+    data.supporter_cost = best_cost;
+}
+
+void LmCutLandmarks::set_supporter(int op, int prop, int bit) {
+    OperatorData &data = ops_[op];
+    if (data.supporter >= 0) {
+        int old = mask_offset_[data.supporter] + data.supporter_bit / 64;
+        masks_[old] &= ~(std::uint64_t(1) << (data.supporter_bit % 64));
+    }
+    data.supporter = prop;
+    data.supporter_bit = bit;
+    masks_[mask_offset_[prop] + bit / 64] |= std::uint64_t(1) << (bit % 64);
 }
 
 void LmCutLandmarks::next_zone_stamps() {
@@ -147,40 +199,57 @@ void LmCutLandmarks::mark_goal_plateau() {
     }
 }
 
-// Walks the justification graph from the state; operators that lead into the goal zone
-// form the cut, everything else they reach is before the goal zone.
 void LmCutLandmarks::second_exploration() {
+    // Raw pointers to locals: stores to the stack and the zone marks could otherwise alias
+    // every member the loop reads, forcing reloads.
     const std::uint32_t before = goal_zone_stamp_ + 1;
-    stack_.clear();
+    const std::uint32_t goal_zone = goal_zone_stamp_;
+    std::uint32_t *const zone = zone_.data();
+    const int *const eff_items = relaxed_.effect_items();
+    const int *const users_offsets = relaxed_.precondition_of_offsets();
+    const Trigger *const triggers = triggers_.data();
+    const int *const mask_offset = mask_offset_.data();
+    const std::uint64_t *const masks = masks_.data();
+    stack_.resize(relaxed_.num_propositions() + 1);
+    int *const stack = stack_.data();
+    int top = 0;
+    cut_.resize(relaxed_.num_operators());
+    int *const cut = cut_.data();
+    int cut_size = 0;
     const int artificial = relaxed_.artificial_precondition();
-    zone_[artificial] = before;
-    stack_.push_back(artificial);
+    zone[artificial] = before;
+    stack[top++] = artificial;
     for (ground::FactId fact : ranked_facts_) {
-        zone_[fact] = before;
-        stack_.push_back(fact);
+        zone[fact] = before;
+        stack[top++] = fact;
     }
-    while (!stack_.empty()) {
-        int prop = stack_.back();
-        stack_.pop_back();
-        for (int op : relaxed_.precondition_of(prop)) {
-            if (ops_[op].supporter != prop)
-                continue;
-            std::span<const int> effects = relaxed_.effects(op);
-            bool into_goal_zone = std::any_of(effects.begin(), effects.end(),
-                                              [&](int e) { return in_goal_zone(e); });
-            if (into_goal_zone) {
-                assert(ops_[op].cost > 0);
-                cut_.push_back(op);
-                continue;
-            }
-            for (int effect : effects) {
-                if (zone_[effect] != before) {
-                    zone_[effect] = before;
-                    stack_.push_back(effect);
+    while (top > 0) {
+        const int prop = stack[--top];
+        const Trigger *entries = triggers + users_offsets[prop];
+        for (int w = mask_offset[prop], base = 0; w < mask_offset[prop + 1]; ++w, base += 64) {
+            for (std::uint64_t word = masks[w]; word != 0; word &= word - 1) {
+                const Trigger &t = entries[base + std::countr_zero(word)];
+                if (t.first_effect < 0)
+                    continue;
+                bool into_goal_zone = zone[t.first_effect] == goal_zone;
+                for (int e = t.effects_begin + 1; e < t.effects_end; ++e)
+                    into_goal_zone |= zone[eff_items[e]] == goal_zone;
+                if (into_goal_zone) {
+                    cut[cut_size++] = t.op;
+                    continue;
+                }
+                for (int e = t.effects_begin; e < t.effects_end; ++e) {
+                    const int effect = eff_items[e];
+                    if (zone[effect] != before) {
+                        zone[effect] = before;
+                        stack[top++] = effect;
+                    }
                 }
             }
         }
     }
+    cut_.resize(cut_size);
+    assert(std::all_of(cut_.begin(), cut_.end(), [&](int op) { return ops_[op].cost > 0; }));
 }
 
 }  // namespace envdesign::heuristics

@@ -10,10 +10,13 @@
 // which is subtracted from its operators before h^max is repaired incrementally. The sum of
 // cut costs is the LM-cut estimate.
 //
-// Implementation follows Fast Downward's: flat arrays, FD's adaptive bucket queue and
-// supporter tie-breaking (the last precondition popped; on repair, the first of maximum
-// cost), and the incremental h^max update after each cut. All scratch memory is kept
-// between calls.
+// Implementation follows Fast Downward's: FD's adaptive bucket queue and supporter
+// tie-breaking (the last precondition popped; on repair, the first of maximum cost), FD's
+// fact and operator order (relaxed_task.h), and the incremental h^max update after each
+// cut, so estimates equal FD's. For speed, each proposition keeps a bitmask over its
+// precondition_of list marking the operators it supports: both the second exploration
+// and the repair visit exactly those operators, in FD's order, without scanning the rest.
+// All scratch memory is kept between calls.
 //
 // Example:
 //   LmCutLandmarks lmcut(task);
@@ -54,6 +57,7 @@ private:
         int unsatisfied;     // preconditions not yet reached (first exploration)
         int supporter;       // h^max supporter proposition, -1 while unreached
         int supporter_cost;  // h^max cost of the supporter
+        int supporter_bit;   // this operator's bit in the supporter's mask
     };
 
     void first_exploration(std::span<const ground::FactId> facts);
@@ -62,6 +66,7 @@ private:
     void second_exploration();  // from ranked_facts_, set by first_exploration
     void next_zone_stamps();
     void update_supporter(int op);
+    void set_supporter(int op, int prop, int bit);
     void enqueue_if_necessary(int prop, int cost) {
         if (prop_cost_[prop] > cost) {
             prop_cost_[prop] = cost;
@@ -69,19 +74,39 @@ private:
         }
     }
     bool in_goal_zone(int prop) const { return zone_[prop] == goal_zone_stamp_; }
+    // Calls visit(op) for each operator `prop` supports, in increasing id order. Bits are
+    // read a word at a time, so visit may move the current operator to another supporter.
+    template <class Visit>
+    void for_each_supported(int prop, Visit visit);
 
     RelaxedTask relaxed_;
     std::vector<OperatorData> ops_;
     std::vector<int> num_preconditions_;
-    std::vector<int> prop_cost_;         // h^max cost, UNREACHED if not reached
+    std::vector<int> prop_cost_;  // h^max cost, UNREACHED if not reached
+    // One per precondition_of entry (same flat index): the operator and its effects, so
+    // the hot loops reach an operator's first effect with one load instead of three.
+    struct Trigger {
+        int op;
+        int first_effect;  // -1 if the operator has no effects
+        int effects_begin;  // into relaxed_.effect_items()
+        int effects_end;
+    };
+    std::vector<Trigger> triggers_;
+    // precondition_bit_[precondition_offset(op) + i]: op's index in the precondition_of
+    // list of its i-th precondition.
+    std::vector<int> precondition_bit_;
+    // Supporter masks: proposition p owns words [mask_offset_[p], mask_offset_[p + 1]);
+    // bit k set iff precondition_of(p)[k] has p as its supporter.
+    std::vector<int> mask_offset_;
+    std::vector<std::uint64_t> masks_;
     // Zone marks without a per-round reset: a proposition is in the goal zone iff its
     // stamp equals goal_zone_stamp_, before it iff the stamp is goal_zone_stamp_ + 1.
     std::vector<std::uint32_t> zone_;
     std::uint32_t goal_zone_stamp_ = 0;
     AdaptiveQueue queue_;
     std::vector<int> stack_;
-    std::vector<ground::FactId> ranked_facts_;  // the state's facts in FD's order
     std::vector<int> cut_;
+    std::vector<ground::FactId> ranked_facts_;  // the state's facts in FD's order
     std::vector<ground::OperatorId> landmark_;
 };
 

@@ -41,6 +41,16 @@ public:
     std::span<const int> effects(int op) const { return slice(eff_, op); }
     std::span<const int> precondition_of(int prop) const { return slice(pre_of_, prop); }
     std::span<const int> effect_of(int prop) const { return slice(eff_of_, prop); }
+    // Where an operator's preconditions (a proposition's precondition_of list) start in
+    // one flat array of all of them: lets callers keep parallel per-entry data.
+    int precondition_offset(int op) const { return pre_.offsets[op]; }
+    int precondition_of_offset(int prop) const { return pre_of_.offsets[prop]; }
+    int num_precondition_entries() const { return static_cast<int>(pre_.items.size()); }
+    // The flat arrays behind effects() and precondition_of(), for hot loops.
+    const int *effect_offsets() const { return eff_.offsets.data(); }
+    const int *effect_items() const { return eff_.items.data(); }
+    const int *precondition_of_offsets() const { return pre_of_.offsets.data(); }
+    const int *precondition_of_items() const { return pre_of_.items.data(); }
 
 private:
     // A list of lists: entries of list i are items[offsets[i] .. offsets[i+1]).
