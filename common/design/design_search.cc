@@ -149,10 +149,12 @@ private:
     }
 
     bool cannot_win(const Configuration &configuration,
-                    const std::vector<const TaskExplicability *> &known) const {
+                    const std::vector<const TaskExplicability *> &known,
+                    const std::vector<std::optional<double>> &robot_cost_bounds = {}) const {
         if (!result_.best)
             return false;
-        double bound = objective_lower_bound(problem_, design_cost(problem_, configuration), known);
+        double bound = objective_lower_bound(problem_, design_cost(problem_, configuration), known,
+                                             robot_cost_bounds);
         return clearly_greater(bound, result_.best->objective.value);
     }
 
@@ -164,7 +166,7 @@ private:
             std::vector<const TaskExplicability *> known;
             for (const auto &t : partial.tasks)
                 known.push_back(t ? &*t : nullptr);
-            return cannot_win(partial.configuration, known);
+            return cannot_win(partial.configuration, known, partial.robot_cost_bounds);
         };
         callbacks.done = [&](ConfigurationEvaluation e) { collect(std::move(e)); };
         evaluator_.evaluate(batch, options_.deadline, callbacks);

@@ -11,8 +11,12 @@
 //     design cost only grows with the subset when costs are non-negative (the bound takes the
 //     cheapest subset of every remaining size, so negative costs are safe too);
 //   - a configuration being evaluated is abandoned as soon as the tasks known so far, with
-//     the unknown ones at their least, exceed the best (Evaluator's `abandon`);
-//   - (in the evaluator) equal ground tasks are solved once (plan_cache.h).
+//     the unknown ones at their least, exceed the best (Evaluator's `abandon`); the least
+//     robot cost of an unknown task is the robot's own optimal cost when the evaluator
+//     found it (the most explicable plan is a robot plan), so a configuration can be
+//     dropped before any compiled task is solved;
+//   - (in the evaluator) equal ground tasks are solved once (plan_cache.h), and the human's
+//     task is not solved when the compiled one has no plan.
 // With --prune relevant (options.relevant set) the search instead grows configurations
 // layer by layer, adding to each only the modifications relevant to its plans
 // (relevance.h); the same bounds apply.

@@ -9,8 +9,9 @@
 //
 // The search keeps control of what is worth evaluating: before each task of a configuration
 // is started and after each one finishes, the evaluator asks `abandon` whether the
-// configuration can still win; if not, it drops the rest (status CUT_OFF). Both callbacks
-// run on the thread that called evaluate(), never concurrently.
+// configuration can still win; if not, it drops the rest (status CUT_OFF). An evaluator may
+// first find cheap lower bounds (robot_cost_bounds) to sharpen that question. Both
+// callbacks run on the thread that called evaluate(), never concurrently.
 
 #include "design/configuration.h"
 #include "design/deadline.h"
@@ -32,6 +33,9 @@ struct ConfigurationEvaluation {
     Configuration configuration;
     EvaluationStatus status = EvaluationStatus::LIMIT;
     std::vector<std::optional<TaskExplicability>> tasks;  // per task of the spec; unset: not evaluated
+    // Per task, a lower bound on c_R(pi) known before the task is evaluated: the optimal
+    // cost of the robot's own model (the most explicable plan is one of its plans).
+    std::vector<std::optional<double>> robot_cost_bounds;
 };
 
 struct EvaluationCallbacks {

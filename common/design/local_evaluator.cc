@@ -1,5 +1,8 @@
 #include "design/local_evaluator.h"
 
+#include "design/dispatcher.h"
+#include "ground/grounder.h"
+
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -12,14 +15,8 @@ Evaluator::~Evaluator() = default;
 
 namespace {
 
-struct Job {
-    int configuration = 0;
-    int task = 0;
-};
-
 struct Answer {
-    Job job;
-    TaskExplicability value;
+    JobAnswer answer;
     std::exception_ptr error;
 };
 
@@ -73,91 +70,12 @@ private:
     bool closed_ = false;
 };
 
-// The dispatcher's view of one batch: what is in flight, what is known, what is finished.
-class Batch {
-public:
-    Batch(const std::vector<Configuration> &configurations, int tasks,
-          const EvaluationCallbacks &callbacks)
-        : callbacks_(callbacks), tasks_(tasks), in_flight_(configurations.size(), 0),
-          stopped_(configurations.size()), finished_(configurations.size(), false) {
-        for (const auto &c : configurations)
-            state_.push_back({c, EvaluationStatus::LIMIT, std::vector<std::optional<TaskExplicability>>(tasks)});
-    }
-
-    // The next job to start, or nullopt when the batch has none left.
-    std::optional<Job> next_job() {
-        while (next_.configuration < static_cast<int>(state_.size())) {
-            int c = next_.configuration;
-            if (!stopped_[c] && callbacks_.abandon && callbacks_.abandon(state_[c]))
-                stop(c, EvaluationStatus::CUT_OFF);
-            if (stopped_[c] || next_.task >= tasks_) {
-                next_ = {c + 1, 0};
-                continue;
-            }
-            ++in_flight_[c];
-            return Job{c, next_.task++};
-        }
-        return std::nullopt;
-    }
-
-    void receive(Answer &a) {
-        int c = a.job.configuration;
-        --in_flight_[c];
-        if (a.value.status == ExplicabilityStatus::LIMIT)
-            stop(c, EvaluationStatus::LIMIT);
-        else
-            state_[c].tasks[a.job.task] = std::move(a.value);
-        if (!stopped_[c] && complete(c)) {
-            stop(c, EvaluationStatus::COMPLETE);
-        } else if (!stopped_[c] && callbacks_.abandon && callbacks_.abandon(state_[c])) {
-            stop(c, EvaluationStatus::CUT_OFF);
-        }
-        finish_if_idle(c);
-    }
-
-    // Everything not finished yet ran out of time.
-    void finish_rest() {
-        for (std::size_t c = 0; c < state_.size(); ++c) {
-            stop(static_cast<int>(c), EvaluationStatus::LIMIT);
-            finish_if_idle(static_cast<int>(c));
-        }
-    }
-
-private:
-    bool complete(int c) const {
-        for (const auto &t : state_[c].tasks)
-            if (!t)
-                return false;
-        return true;
-    }
-
-    void stop(int c, EvaluationStatus status) {
-        if (!stopped_[c])
-            stopped_[c] = status;
-    }
-
-    void finish_if_idle(int c) {
-        if (finished_[c] || !stopped_[c] || in_flight_[c] > 0)
-            return;
-        finished_[c] = true;
-        state_[c].status = *stopped_[c];
-        callbacks_.done(std::move(state_[c]));
-    }
-
-    const EvaluationCallbacks &callbacks_;
-    int tasks_;
-    std::vector<ConfigurationEvaluation> state_;
-    std::vector<int> in_flight_;
-    std::vector<std::optional<EvaluationStatus>> stopped_;
-    std::vector<bool> finished_;
-    Job next_;
-};
-
 }  // namespace
 
 LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
                                planning::PlannerOptions options)
-    : problem_(problem), workers_(std::max(1, workers)), cache_(std::move(options)) {}
+    : problem_(problem), workers_(std::max(1, workers)), cache_(std::move(options)),
+      robot_bounds_(problem.weights.kappa > 0) {}
 
 TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
                                                 const Deadline &deadline) {
@@ -165,17 +83,39 @@ TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configurati
     return evaluate_explicability(models, problem_.weights.distance, cache_, deadline);
 }
 
+std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration,
+                                                      int task, const Deadline &deadline) {
+    ModelPair models = configured_models(problem_, configuration, task);
+    PlanOutcome robot =
+        cache_.solve(ground::ground(models.robot_domain, models.robot_problem), deadline);
+    if (robot.status == PlanStatus::SOLVED)
+        return static_cast<double>(robot.cost);
+    if (robot.status == PlanStatus::UNSOLVABLE)
+        return INF;
+    return std::nullopt;
+}
+
+JobAnswer LocalEvaluator::run(const Configuration &configuration, const Job &job,
+                              const Deadline &deadline) {
+    JobAnswer answer{job, std::nullopt, {}};
+    if (job.kind == JobKind::ROBOT_BOUND)
+        answer.robot_bound = robot_cost_bound(configuration, job.task, deadline);
+    else
+        answer.explicability = evaluate_task(configuration, job.task, deadline);
+    return answer;
+}
+
 void LocalEvaluator::evaluate(const std::vector<Configuration> &batch, const Deadline &deadline,
                               const EvaluationCallbacks &callbacks) {
-    Batch state(batch, static_cast<int>(problem_.tasks.size()), callbacks);
+    Dispatcher dispatcher(batch, static_cast<int>(problem_.tasks.size()), robot_bounds_, callbacks);
     Channel channel;
     std::vector<std::thread> threads;
     for (int i = 0; i < workers_; ++i) {
         threads.emplace_back([&] {
             while (auto job = channel.receive_job()) {
-                Answer a{*job, {}, nullptr};
+                Answer a{{*job, std::nullopt, {}}, nullptr};
                 try {
-                    a.value = evaluate_task(batch[job->configuration], job->task, deadline);
+                    a.answer = run(batch[job->configuration], *job, deadline);
                 } catch (...) {
                     a.error = std::current_exception();
                 }
@@ -187,7 +127,7 @@ void LocalEvaluator::evaluate(const std::vector<Configuration> &batch, const Dea
     int in_flight = 0;
     while (true) {
         while (in_flight < workers_ && !error && !deadline.expired()) {
-            auto job = state.next_job();
+            auto job = dispatcher.next_job();
             if (!job)
                 break;
             channel.send(*job);
@@ -197,18 +137,19 @@ void LocalEvaluator::evaluate(const std::vector<Configuration> &batch, const Dea
             break;
         Answer a = channel.receive_answer();
         --in_flight;
-        ++task_evaluations_;
+        if (a.answer.job.kind == JobKind::EXPLICABILITY)
+            ++task_evaluations_;
         if (a.error && !error)
             error = a.error;
         if (!a.error)
-            state.receive(a);
+            dispatcher.receive(std::move(a.answer));
     }
     channel.close();
     for (auto &t : threads)
         t.join();
     if (error)
         std::rethrow_exception(error);
-    state.finish_rest();
+    dispatcher.finish_rest();
 }
 
 EvaluatorCounters LocalEvaluator::counters() const {

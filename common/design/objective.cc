@@ -45,7 +45,8 @@ Objective objective_of(const DesignProblem &problem, double design_cost,
 }
 
 double objective_lower_bound(const DesignProblem &problem, double design_cost,
-                             const std::vector<const TaskExplicability *> &known) {
+                             const std::vector<const TaskExplicability *> &known,
+                             const std::vector<std::optional<double>> &robot_cost_bounds) {
     const ObjectiveWeights &w = problem.weights;
     double expected_ie = 0, expected_cost = 0;
     for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
@@ -56,8 +57,11 @@ double objective_lower_bound(const DesignProblem &problem, double design_cost,
         if (t && t->status == ExplicabilityStatus::INEXPLICABLE)
             return INF;
         bool solved = t && t->status == ExplicabilityStatus::SOLVED;
+        double bound = i < robot_cost_bounds.size() && robot_cost_bounds[i] ? *robot_cost_bounds[i] : 0.0;
+        if (!solved && std::isinf(bound))
+            return INF;
         expected_ie += p * (solved ? t->ie : least_ie(w.distance));
-        expected_cost += p * (solved ? t->robot_cost : 0.0);
+        expected_cost += p * (solved ? t->robot_cost : bound);
     }
     ObjectiveTerms terms{expected_ie * discounted_horizon(w), design_cost,
                          w.horizon * expected_cost};

@@ -12,6 +12,7 @@
 #include "design/configuration.h"
 #include "design/explicability.h"
 
+#include <optional>
 #include <vector>
 
 namespace envdesign::design {
@@ -36,9 +37,11 @@ Objective objective_of(const DesignProblem &problem, double design_cost,
 
 // A lower bound on the objective when only some tasks are known (`known[i]` null: task i
 // not evaluated yet): unknown tasks count with the least IE the distance allows (1 or 0)
-// and robot cost 0. With no task known it bounds every configuration of that design cost.
+// and robot cost `robot_cost_bounds[i]` when given (INF: the robot has no plan, so neither
+// has P_mod), else 0. With no task known it bounds every configuration of that design cost.
 double objective_lower_bound(const DesignProblem &problem, double design_cost,
-                             const std::vector<const TaskExplicability *> &known);
+                             const std::vector<const TaskExplicability *> &known,
+                             const std::vector<std::optional<double>> &robot_cost_bounds = {});
 
 // a == b within a relative 1e-9 (infinities equal each other only).
 bool nearly_equal(double a, double b);

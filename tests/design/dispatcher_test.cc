@@ -1,0 +1,77 @@
+// The dispatcher's job order: robot bounds first, then `abandon`, then explicability jobs.
+
+#include "design/dispatcher.h"
+
+#include <gtest/gtest.h>
+
+namespace envdesign::design {
+namespace {
+
+TaskExplicability solved(double ie) {
+    TaskExplicability t;
+    t.status = ExplicabilityStatus::SOLVED;
+    t.ie = ie;
+    t.robot_cost = 1;
+    return t;
+}
+
+struct Recorder {
+    std::vector<ConfigurationEvaluation> done;
+    EvaluationCallbacks callbacks;
+};
+
+TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
+    Recorder r;
+    // Abandon a configuration once its robot bounds are known and sum to more than 10.
+    r.callbacks.abandon = [](const ConfigurationEvaluation &e) {
+        double sum = 0;
+        for (const auto &b : e.robot_cost_bounds)
+            sum += b.value_or(0);
+        return sum > 10;
+    };
+    r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
+    Dispatcher d({{}, {0}}, 2, true, r.callbacks);
+    auto answer_bound = [&](Job job, double bound) { d.receive({job, bound, {}}); };
+    // Both bounds of {} go out before anything else of it; {0}'s follow while they are away.
+    std::vector<Job> sent;
+    for (int i = 0; i < 4; ++i)
+        sent.push_back(*d.next_job());
+    for (const auto &job : sent)
+        EXPECT_EQ(job.kind, JobKind::ROBOT_BOUND);
+    EXPECT_EQ(sent[2].configuration, 1);
+    EXPECT_FALSE(d.next_job());  // everything waits for answers
+    answer_bound(sent[2], 8);
+    answer_bound(sent[3], 8);    // {0}: 16 > 10: abandoned, no compiled task solved
+    ASSERT_EQ(r.done.size(), 1u);
+    EXPECT_EQ(r.done[0].status, EvaluationStatus::CUT_OFF);
+    EXPECT_EQ(r.done[0].configuration, Configuration{0});
+    answer_bound(sent[0], 3);
+    answer_bound(sent[1], 3);
+    Job first = *d.next_job();
+    Job second = *d.next_job();
+    EXPECT_EQ(first.kind, JobKind::EXPLICABILITY);
+    EXPECT_EQ(second.task, 1);
+    EXPECT_FALSE(d.next_job());
+    d.receive({first, std::nullopt, solved(1)});
+    d.receive({second, std::nullopt, solved(2)});
+    ASSERT_EQ(r.done.size(), 2u);
+    EXPECT_EQ(r.done[1].status, EvaluationStatus::COMPLETE);
+    EXPECT_EQ(r.done[1].tasks[1]->ie, 2);
+}
+
+TEST(Dispatcher, WithoutBoundsOnlyCompiledTasks) {
+    Recorder r;
+    r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
+    Dispatcher d({{}}, 1, false, r.callbacks);
+    Job job = *d.next_job();
+    EXPECT_EQ(job.kind, JobKind::EXPLICABILITY);
+    d.finish_rest();            // out of time while the job is away: reported when it is back
+    EXPECT_TRUE(r.done.empty());
+    TaskExplicability limit;    // LIMIT
+    d.receive({job, std::nullopt, limit});
+    ASSERT_EQ(r.done.size(), 1u);
+    EXPECT_EQ(r.done[0].status, EvaluationStatus::LIMIT);
+}
+
+}  // namespace
+}  // namespace envdesign::design
