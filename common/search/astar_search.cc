@@ -1,7 +1,7 @@
 #include "search/astar_search.h"
 
 #include <algorithm>
-#include <tuple>
+#include <utility>
 
 namespace envdesign::search {
 namespace {
@@ -43,11 +43,11 @@ SearchStatus AStarSearch::step() {
         return finish(SearchStatus::LIMIT);
     while (!open_list_->empty()) {
         StateID id = open_list_->pop();
-        Node &node = nodes_[id];
         // Entries of states closed since they were pushed are stale: FD skips them too.
-        if (node.status == NodeStatus::CLOSED)
+        if (statuses_[id] == NodeStatus::CLOSED)
             continue;
-        node.status = NodeStatus::CLOSED;
+        statuses_[id] = NodeStatus::CLOSED;
+        const Node &node = nodes_[id];
         if (node.g + node.h > last_jump_f_) {
             last_jump_f_ = node.g + node.h;
             result_.stats.expanded_until_last_jump = result_.stats.expanded;
@@ -73,12 +73,12 @@ SearchStatus AStarSearch::initialize() {
     result_.stats.initial_h = h;
     if (h == heuristics::DEAD_END) {
         ++result_.stats.dead_ends;
-        nodes_[id].status = NodeStatus::DEAD_END;
+        statuses_[id] = NodeStatus::DEAD_END;
         return finish(SearchStatus::FAILED);
     }
     Node node;
     node.h = h;
-    open(id, node);
+    open(id, node, 0);
     return SearchStatus::IN_PROGRESS;
 }
 
@@ -114,50 +114,48 @@ void AStarSearch::expand(StateID id) {
 void AStarSearch::generate(StateID parent_id, ground::OperatorId op) {
     InsertResult succ = registry_.insert_successor(parent_id, op);
     ++result_.stats.generated;
+    NodeStatus &status = statuses_[succ.id];
+    if (status == NodeStatus::DEAD_END)
+        return;
+    const ground::GroundOperator &o = task_.operators[op];
     // Copy the parent: nodes_[succ.id] may grow the storage and move it.
     const Node parent = nodes_[parent_id];
-    const ground::GroundOperator &o = task_.operators[op];
-    Node candidate;
-    candidate.g = parent.g + o.cost;
-    candidate.secondary_g = parent.secondary_g + o.secondary_cost;
-    candidate.parent = parent_id;
-    candidate.op = op;
-    Node &node = nodes_[succ.id];
-    if (node.status == NodeStatus::DEAD_END)
-        return;
-    if (node.status == NodeStatus::NEW) {
+    Node candidate{parent.g + o.cost, 0, parent_id, op};
+    long long candidate_secondary = secondary_g(parent_id) + o.secondary_cost;
+    if (status == NodeStatus::NEW) {
         registry_.unpack(succ.id, successor_);
         int h = heuristic_.compute(view_of(successor_));
         ++result_.stats.evaluated;
         if (h == heuristics::DEAD_END) {
-            node.status = NodeStatus::DEAD_END;
+            status = NodeStatus::DEAD_END;
             ++result_.stats.dead_ends;
             return;
         }
         candidate.h = h;
-        node = candidate;
-        open(succ.id, node);
+        open(succ.id, candidate, candidate_secondary);
         return;
     }
-    if (std::tie(candidate.g, candidate.secondary_g) < std::tie(node.g, node.secondary_g)) {
-        if (node.status == NodeStatus::CLOSED)
+    const Node &node = nodes_[succ.id];
+    if (std::pair(candidate.g, candidate_secondary) < std::pair(node.g, secondary_g(succ.id))) {
+        if (status == NodeStatus::CLOSED)
             ++result_.stats.reopened;
         candidate.h = node.h;  // cached: heuristics here are not path-dependent
-        node = candidate;
-        open(succ.id, node);
+        open(succ.id, candidate, candidate_secondary);
     }
 }
 
-void AStarSearch::open(StateID id, const Node &node) {
+void AStarSearch::open(StateID id, const Node &node, long long secondary_g) {
     nodes_[id] = node;
-    nodes_[id].status = NodeStatus::OPEN;
-    open_list_->push(id, {node.g + node.h, use_secondary_ ? node.secondary_g : 0, node.h});
+    statuses_[id] = NodeStatus::OPEN;
+    if (use_secondary_)
+        secondary_g_[id] = secondary_g;
+    open_list_->push(id, {node.g + node.h, secondary_g, node.h});
 }
 
 void AStarSearch::extract_plan(StateID goal) {
     const Node &goal_node = nodes_[goal];
     result_.cost = goal_node.g;
-    result_.secondary_cost = goal_node.secondary_g;
+    result_.secondary_cost = secondary_g(goal);
     result_.plan.clear();
     for (StateID id = goal; nodes_[id].parent != NO_STATE; id = nodes_[id].parent)
         result_.plan.push_back(nodes_[id].op);
@@ -165,7 +163,8 @@ void AStarSearch::extract_plan(StateID goal) {
 }
 
 std::size_t AStarSearch::memory_bytes() const {
-    return registry_.memory_bytes() + nodes_.memory_bytes() + open_list_->memory_bytes();
+    return registry_.memory_bytes() + nodes_.memory_bytes() + statuses_.memory_bytes() +
+           secondary_g_.memory_bytes() + open_list_->memory_bytes();
 }
 
 SearchResult AStarSearch::result() const {

@@ -85,13 +85,13 @@ public:
 
 private:
     enum class NodeStatus : std::uint8_t { NEW, OPEN, CLOSED, DEAD_END };
+    // 16 bytes per state; the status and the secondary g live in their own arrays so that
+    // tasks without secondary costs do not pay for them.
     struct Node {
         int g = 0;
         int h = 0;
         StateID parent = NO_STATE;
         ground::OperatorId op = -1;
-        long long secondary_g = 0;
-        NodeStatus status = NodeStatus::NEW;
     };
 
     SearchStatus initialize();
@@ -100,7 +100,8 @@ private:
     bool is_goal(const UnpackedState &state) const;
     void expand(StateID id);
     void generate(StateID parent, ground::OperatorId op);
-    void open(StateID id, const Node &node);
+    void open(StateID id, const Node &node, long long secondary_g);
+    long long secondary_g(StateID id) const { return use_secondary_ ? secondary_g_.get(id) : 0; }
     void extract_plan(StateID goal);
 
     const ground::GroundTask &task_;
@@ -112,6 +113,8 @@ private:
     StateRegistry registry_;
     SuccessorGenerator successors_;
     PerStateInformation<Node> nodes_;
+    PerStateInformation<NodeStatus> statuses_{NodeStatus::NEW};
+    PerStateInformation<long long> secondary_g_;
     std::unique_ptr<OpenList> open_list_;
     UnpackedState current_;    // the state being expanded
     UnpackedState successor_;  // scratch for evaluating a new successor

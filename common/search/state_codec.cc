@@ -28,11 +28,40 @@ std::vector<std::vector<ground::FactId>> make_variables(const ground::GroundTask
     return vars;
 }
 
-std::vector<int> variable_ranges(const std::vector<std::vector<ground::FactId>> &vars) {
+// A variable is "exactly one" if the initial state has one of its facts and every operator
+// that deletes one of them adds another: with the mutex property, one of its facts is then
+// true in every reachable state, so it needs no "none" value (like FD's variables without
+// "<none of those>"). A single fact that is always true packs into zero bits.
+std::vector<bool> exactly_one_variables(const ground::GroundTask &task,
+                                        const std::vector<std::vector<ground::FactId>> &vars) {
+    std::vector<int> var_of(task.num_facts());
+    for (int v = 0; v < static_cast<int>(vars.size()); ++v)
+        for (ground::FactId f : vars[v])
+            var_of[f] = v;
+    std::vector<int> initial_count(vars.size(), 0);
+    for (ground::FactId f : task.initial_state)
+        ++initial_count[var_of[f]];
+    std::vector<bool> exactly_one(vars.size());
+    for (std::size_t v = 0; v < vars.size(); ++v)
+        exactly_one[v] = initial_count[v] == 1;
+    for (const ground::GroundOperator &op : task.operators) {
+        for (ground::FactId f : op.del) {
+            int v = var_of[f];
+            bool adds_mate = std::any_of(op.add.begin(), op.add.end(),
+                                         [&](ground::FactId a) { return var_of[a] == v; });
+            if (!adds_mate)
+                exactly_one[v] = false;
+        }
+    }
+    return exactly_one;
+}
+
+std::vector<int> variable_ranges(const std::vector<std::vector<ground::FactId>> &vars,
+                                 const std::vector<bool> &exactly_one) {
     std::vector<int> ranges;
     ranges.reserve(vars.size());
-    for (const auto &facts : vars)
-        ranges.push_back(static_cast<int>(facts.size()) + 1);
+    for (std::size_t v = 0; v < vars.size(); ++v)
+        ranges.push_back(static_cast<int>(vars[v].size()) + (exactly_one[v] ? 0 : 1));
     return ranges;
 }
 
@@ -43,8 +72,9 @@ UnpackedState::UnpackedState(const StateCodec &codec) : bits(codec.num_bitset_wo
 }
 
 StateCodec::StateCodec(const ground::GroundTask &task)
-    : var_facts_(make_variables(task)), fact_var_(task.num_facts()),
-      fact_value_(task.num_facts()), packer_(variable_ranges(var_facts_)) {
+    : var_facts_(make_variables(task)), exactly_one_(exactly_one_variables(task, var_facts_)),
+      fact_var_(task.num_facts()), fact_value_(task.num_facts()),
+      packer_(variable_ranges(var_facts_, exactly_one_)) {
     for (int var = 0; var < static_cast<int>(var_facts_.size()); ++var) {
         const auto &facts = var_facts_[var];
         none_value_.push_back(static_cast<int>(facts.size()));
@@ -79,11 +109,15 @@ void StateCodec::compile_effects(const ground::GroundTask &task) {
 }
 
 void StateCodec::pack(std::span<const ground::FactId> facts, Bin *out) const {
-    std::fill(out, out + num_bins(), 0);
-    for (int var = 0; var < packer_.num_variables(); ++var)
-        packer_.set(out, var, none_value_[var]);
+    std::vector<int> values(none_value_);
     for (ground::FactId fact : facts)
-        packer_.set(out, fact_var_[fact], fact_value_[fact]);
+        values[fact_var_[fact]] = fact_value_[fact];
+    std::fill(out, out + num_bins(), 0);
+    for (int var = 0; var < packer_.num_variables(); ++var) {
+        if (exactly_one_[var] && values[var] == none_value_[var])
+            throw std::invalid_argument("state has no fact of an exactly-one mutex group");
+        packer_.set(out, var, values[var]);
+    }
 }
 
 void StateCodec::unpack(const Bin *in, UnpackedState &out) const {

@@ -3,7 +3,8 @@
 //
 // Each mutex group of the task becomes one variable whose value is the index of its true
 // fact in the group, or |group| for "none of them"; each fact in no group becomes a 1-bit
-// variable. The codec packs and unpacks states and applies an operator directly to a
+// variable. Variables that provably always have a true fact (see exactly_one_variables in
+// the .cc) get no "none" value, as FD's do, which often saves a bit per group. The codec packs and unpacks states and applies an operator directly to a
 // packed state (delete effects before add effects, so add wins, as in PDDL).
 //
 // Example:
@@ -45,7 +46,8 @@ public:
     int num_facts() const { return static_cast<int>(fact_var_.size()); }
     int num_bitset_words() const { return (num_facts() + 63) / 64; }
 
-    // `facts` must respect the mutex groups (at most one true fact per group).
+    // `facts` must respect the mutex groups (at most one true fact per group); throws
+    // std::invalid_argument if it lacks a fact of an always-one variable.
     void pack(std::span<const ground::FactId> facts, Bin *out) const;
     void unpack(const Bin *in, UnpackedState &out) const;
     // Writes the successor of `parent` under operator `op` to `out` (which may not alias
@@ -64,6 +66,7 @@ private:
 
     // One variable per group (facts listed), then one per ungrouped fact.
     std::vector<std::vector<ground::FactId>> var_facts_;
+    std::vector<bool> exactly_one_;  // per variable: never "none" in reachable states
     std::vector<int> fact_var_;    // the variable of each fact
     std::vector<int> fact_value_;  // the value of its variable that means "this fact is true"
     std::vector<int> none_value_;  // per variable: the value meaning "no fact of it true"

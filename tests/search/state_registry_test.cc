@@ -85,6 +85,30 @@ TEST(StateRegistry, BytesPerState) {
     EXPECT_EQ(StateRegistry(testing::make_task(0)).bytes_per_state(), 4U);
 }
 
+// 16 groups of 4 facts. If every group always has a true fact (one initially, and moves
+// delete one fact of a group only while adding another), a group needs 2 bits and all fit
+// one bin; a single operator that only deletes makes its group need a "none" value.
+TEST(StateRegistry, ExactlyOneGroupsNeedNoNoneValue) {
+    ground::GroundTask task = testing::make_task(64);
+    for (int g = 0; g < 16; ++g) {
+        task.mutex_groups.push_back({4 * g, 4 * g + 1, 4 * g + 2, 4 * g + 3});
+        task.initial_state.push_back(4 * g);
+        testing::add_op(task, "(move)", {4 * g}, {4 * g + 1}, {4 * g});
+    }
+    EXPECT_EQ(StateRegistry(task).bytes_per_state(), 4U);
+    StateRegistry registry(task);
+    StateID init = registry.insert_facts(task.initial_state).id;
+    StateID succ = registry.insert_successor(init, 3).id;
+    UnpackedState out(registry.codec());
+    registry.unpack(succ, out);
+    std::vector<ground::FactId> expected = task.initial_state;
+    expected[3] = 13;
+    EXPECT_EQ(out.facts, expected);
+    // A delete without an add of a group mate: group 0 may become empty -> 3 bits.
+    testing::add_op(task, "(drop)", {0}, {}, {0});
+    EXPECT_EQ(StateRegistry(task).bytes_per_state(), 8U);
+}
+
 TEST(StateRegistry, DeduplicatesAndKeepsIdsDense) {
     ground::GroundTask task = packed_task();
     StateRegistry registry(task);
