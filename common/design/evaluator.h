@@ -47,6 +47,7 @@ struct EvaluatorCounters {
     long long task_evaluations = 0;  // (configuration, task) pairs evaluated
     long long planner_runs = 0;
     long long cache_hits = 0;
+    long long groundings_skipped = 0;  // cache hits found before grounding
     double planner_seconds = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "design/explicability.h"
 
 #include "design/compilation.h"
+#include "design/lifted_key.h"
 #include "ground/grounder.h"
 
 #include <cmath>
@@ -12,8 +13,7 @@ double as_cost(long long cost) { return static_cast<double>(cost); }
 
 std::optional<double> human_optimum(const ModelPair &models, PlanCache &planner,
                                     const Deadline &deadline, bool *limit) {
-    PlanOutcome human =
-        planner.solve(ground::ground(models.human_domain, models.human_problem), deadline);
+    PlanOutcome human = solve_model(models.human_domain, models.human_problem, planner, deadline);
     *limit = human.status == PlanStatus::LIMIT;
     if (human.status == PlanStatus::SOLVED)
         return as_cost(human.cost);
@@ -23,6 +23,12 @@ std::optional<double> human_optimum(const ModelPair &models, PlanCache &planner,
 }
 
 }  // namespace
+
+PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
+                        PlanCache &planner, const Deadline &deadline) {
+    return planner.solve_model(lifted_key(domain, problem),
+                               [&] { return ground::ground(domain, problem); }, deadline);
+}
 
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance) {
     if (std::isinf(human_plan_cost) || std::isinf(human_optimal_cost))
@@ -36,8 +42,7 @@ TaskExplicability evaluate_explicability(const ModelPair &models, Distance dista
                                          bool solve_human_anyway) {
     TaskExplicability result;
     CompiledTask compiled = compile_explicable(models);
-    PlanOutcome explicable =
-        planner.solve(ground::ground(compiled.domain, compiled.problem), deadline);
+    PlanOutcome explicable = solve_model(compiled.domain, compiled.problem, planner, deadline);
     if (explicable.status == PlanStatus::LIMIT)
         return result;
     bool limit = false;

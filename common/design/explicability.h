@@ -39,6 +39,11 @@ struct TaskExplicability {
     std::vector<std::string> plan;  // pi, "(move c00 c10)" ...
 };
 
+// The planner's answer for one lifted model: skips grounding when the model was seen
+// (PlanCache::solve_model with lifted_key.h).
+PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
+                        PlanCache &planner, const Deadline &deadline);
+
 // IE from the two human costs.
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance);
 

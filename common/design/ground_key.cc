@@ -87,6 +87,12 @@ ground::GroundTask canonicalize(const ground::GroundTask &task) {
     return out;
 }
 
+TaskKey key_of_text(const std::string &text) {
+    Hasher h;
+    h.text(text);
+    return h.key();
+}
+
 TaskKey key_of(const ground::GroundTask &task) {
     Hasher h;
     h.number(task.has_action_costs ? 1 : 0);

@@ -1,7 +1,6 @@
 #include "design/local_evaluator.h"
 
 #include "design/dispatcher.h"
-#include "ground/grounder.h"
 
 #include <condition_variable>
 #include <deque>
@@ -86,8 +85,7 @@ TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configurati
 std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration,
                                                       int task, const Deadline &deadline) {
     ModelPair models = configured_models(problem_, configuration, task);
-    PlanOutcome robot =
-        cache_.solve(ground::ground(models.robot_domain, models.robot_problem), deadline);
+    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, cache_, deadline);
     if (robot.status == PlanStatus::SOLVED)
         return static_cast<double>(robot.cost);
     if (robot.status == PlanStatus::UNSOLVABLE)
@@ -154,7 +152,8 @@ void LocalEvaluator::evaluate(const std::vector<Configuration> &batch, const Dea
 
 EvaluatorCounters LocalEvaluator::counters() const {
     CacheCounters c = cache_.counters();
-    return {task_evaluations_, c.planner_runs, c.cache_hits, c.planner_seconds};
+    return {task_evaluations_, c.planner_runs, c.cache_hits, c.groundings_skipped,
+            c.planner_seconds};
 }
 
 }  // namespace envdesign::design

@@ -7,38 +7,50 @@ namespace envdesign::design {
 
 PlanOutcome PlanCache::solve(const ground::GroundTask &task, const Deadline &deadline) {
     ground::GroundTask canonical = canonicalize(task);
-    TaskKey key = key_of(canonical);
+    return memoized(answers_, key_of(canonical), false,
+                    [&] { return run_planner(canonical, deadline); });
+}
+
+PlanOutcome PlanCache::solve_model(const TaskKey &lifted,
+                                   const std::function<ground::GroundTask()> &ground,
+                                   const Deadline &deadline) {
+    return memoized(model_answers_, lifted, true, [&] { return solve(ground(), deadline); });
+}
+
+PlanOutcome PlanCache::memoized(Answers &answers, const TaskKey &key, bool lifted,
+                                const std::function<PlanOutcome()> &compute) {
     std::promise<PlanOutcome> promise;
     std::shared_future<PlanOutcome> answer;
-    bool planner = false;
+    bool owner = false;
     {
         std::lock_guard lock(mutex_);
-        auto it = answers_.find(key);
-        if (it != answers_.end()) {
+        auto it = answers.find(key);
+        if (it != answers.end()) {
             ++counters_.cache_hits;
+            counters_.groundings_skipped += lifted ? 1 : 0;
             answer = it->second;
         } else {
-            ++counters_.planner_runs;
+            counters_.planner_runs += lifted ? 0 : 1;
             answer = promise.get_future().share();
-            answers_.emplace(key, answer);
-            planner = true;
+            answers.emplace(key, answer);
+            owner = true;
         }
     }
-    if (!planner)
-        return answer.get();  // blocks while another thread plans the same task
+    if (!owner)
+        return answer.get();  // blocks while another thread computes the same answer
     PlanOutcome outcome;
     try {
-        outcome = run_planner(canonical, deadline);
+        outcome = compute();
     } catch (...) {
         promise.set_exception(std::current_exception());
         std::lock_guard lock(mutex_);
-        answers_.erase(key);
+        answers.erase(key);
         throw;
     }
     promise.set_value(outcome);
     if (outcome.status == PlanStatus::LIMIT) {
         std::lock_guard lock(mutex_);
-        answers_.erase(key);
+        answers.erase(key);
     }
     return outcome;
 }

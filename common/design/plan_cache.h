@@ -2,6 +2,8 @@
 // The design engine's planner: optimal plans of ground tasks, each distinct task solved once.
 //
 // solve() canonicalizes the task (ground_key.h), looks its key up and plans only on a miss.
+// solve_model() goes one step earlier: keyed by the lifted model (lifted_key.h), it does not
+// even ground a model it has seen (most modifications leave one of the two models alone).
 // Calls are thread-safe: while one thread plans a task, another asking for an equal task
 // waits for that answer instead of planning it again (it counts as a cache hit). Answers cut
 // short by the time limit are not kept.
@@ -15,7 +17,7 @@
 #include "design/ground_key.h"
 #include "planning/planner.h"
 
-#include <atomic>
+#include <functional>
 #include <future>
 #include <map>
 #include <mutex>
@@ -35,7 +37,8 @@ struct PlanOutcome {
 
 struct CacheCounters {
     long long planner_runs = 0;  // searches actually run
-    long long cache_hits = 0;    // answers taken from an equal task
+    long long cache_hits = 0;    // answers taken from an equal task (or an equal lifted model)
+    long long groundings_skipped = 0;  // of those, found by the lifted model
     double planner_seconds = 0;  // time spent in those searches, summed over threads
 };
 
@@ -47,14 +50,26 @@ public:
     // is none, or LIMIT when `deadline` passed first.
     PlanOutcome solve(const ground::GroundTask &task, const Deadline &deadline);
 
+    // The answer for a lifted model whose content address is `lifted`; calls `ground` and
+    // solve() only when no model with that address was seen.
+    PlanOutcome solve_model(const TaskKey &lifted, const std::function<ground::GroundTask()> &ground,
+                            const Deadline &deadline);
+
     CacheCounters counters() const;
 
 private:
+    using Answers = std::map<TaskKey, std::shared_future<PlanOutcome>>;
+
+    // The answer under `key` in `answers`, computed by `compute` on a miss; `lifted` says
+    // which counters a hit and a miss move.
+    PlanOutcome memoized(Answers &answers, const TaskKey &key, bool lifted,
+                         const std::function<PlanOutcome()> &compute);
     PlanOutcome run_planner(const ground::GroundTask &canonical, const Deadline &deadline);
 
     planning::PlannerOptions options_;
     mutable std::mutex mutex_;
-    std::map<TaskKey, std::shared_future<PlanOutcome>> answers_;
+    Answers answers_;         // by ground task
+    Answers model_answers_;   // by lifted model
     CacheCounters counters_;
 };
 

@@ -1,7 +1,7 @@
 #include "design/relevance.h"
 
 #include "design/configuration.h"
-#include "ground/grounder.h"
+#include "design/explicability.h"
 
 #include <map>
 #include <set>
@@ -53,7 +53,7 @@ void add_plan(const pddl::Domain &domain, const std::vector<std::string> &plan, 
 
 void add_optimal_plan(const pddl::Domain &domain, const pddl::Problem &problem,
                       PlanCache &planner, const Deadline &deadline, Touched &touched) {
-    PlanOutcome outcome = planner.solve(ground::ground(domain, problem), deadline);
+    PlanOutcome outcome = solve_model(domain, problem, planner, deadline);
     if (outcome.status == PlanStatus::SOLVED)
         add_plan(domain, outcome.plan, touched);
 }

@@ -88,6 +88,7 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
     out["configurations_pruned"] = c.configurations_pruned;
     out["task_evaluations"] = c.evaluator.task_evaluations;
     out["cache_hits"] = c.evaluator.cache_hits;
+    out["groundings_skipped"] = c.evaluator.groundings_skipped;
     out["planner_seconds"] = c.evaluator.planner_seconds;
     out["limit_reached"] = result.limit_reached;
     return out;

@@ -1,0 +1,84 @@
+#include "design/lifted_key.h"
+
+#include <sstream>
+
+namespace envdesign::design {
+namespace {
+
+// Names may hold any character but space, parentheses and ';': prefix their length.
+void name(std::ostream &out, const std::string &s) { out << s.size() << '#' << s; }
+
+void write(std::ostream &out, const std::vector<pddl::TypedName> &names) {
+    out << '[' << names.size();
+    for (const auto &n : names) {
+        name(out, n.name);
+        out << '-' << n.types.size();
+        for (const auto &t : n.types)
+            name(out, t);
+    }
+    out << ']';
+}
+
+void write(std::ostream &out, const std::vector<pddl::Literal> &literals) {
+    out << '[';
+    for (const auto &l : literals)
+        out << l.to_string() << ';';
+    out << ']';
+}
+
+void write(std::ostream &out, const std::vector<pddl::CostExpression> &costs) {
+    out << '[';
+    for (const auto &c : costs)
+        out << c.constant << '+' << (c.function ? c.function->to_string() : "") << ';';
+    out << ']';
+}
+
+void write(std::ostream &out, const std::vector<pddl::Predicate> &signatures) {
+    out << '[';
+    for (const auto &p : signatures) {
+        name(out, p.name);
+        write(out, p.parameters);
+    }
+    out << ']';
+}
+
+void write_domain(std::ostream &out, const pddl::Domain &d) {
+    for (const auto &[type, parent] : d.type_parent) {
+        name(out, type);
+        name(out, parent);
+    }
+    write(out, d.constants);
+    write(out, d.predicates);
+    write(out, d.functions);
+    for (const auto &a : d.actions) {
+        out << "\n";
+        name(out, a.name);
+        write(out, a.parameters);
+        write(out, a.precondition);
+        write(out, a.effect);
+        write(out, a.costs);
+        write(out, a.secondary_costs);
+    }
+}
+
+void write_problem(std::ostream &out, const pddl::Problem &p) {
+    out << "\n";
+    write(out, p.objects);
+    for (const auto &a : p.init)
+        out << a.to_string() << ';';
+    for (const auto &[term, value] : p.function_values)
+        out << term.to_string() << '=' << value << ';';
+    write(out, p.goal);
+    out << p.minimize_total_cost;
+}
+
+}  // namespace
+
+TaskKey lifted_key(const pddl::Domain &domain, const pddl::Problem &problem) {
+    std::ostringstream out;
+    write_domain(out, domain);
+    write_problem(out, problem);
+    return key_of_text(out.str());
+}
+
+}  // namespace envdesign::design
