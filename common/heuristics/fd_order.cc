@@ -59,16 +59,28 @@ std::vector<std::vector<ground::FactId>> sorted_variables(const ground::GroundTa
     return vars;
 }
 
+std::vector<bool> always_true_facts(const ground::GroundTask &task) {
+    std::vector<bool> result(task.num_facts(), false);
+    for (ground::FactId f : task.initial_state)
+        result[f] = true;
+    for (const ground::GroundOperator &op : task.operators)
+        for (ground::FactId f : op.del)
+            result[f] = false;
+    return result;
+}
+
 // FD's causal graph weights: one unit per operator, precondition variable and changed
 // variable (variable_order.py, weight_graph_from_ops).
-Graph causal_graph(const ground::GroundTask &task, const std::vector<int> &var_of) {
+Graph causal_graph(const ground::GroundTask &task, const std::vector<int> &var_of,
+                   const std::vector<bool> &always_true) {
     Graph graph(task.num_facts() == 0 ? 0 : *std::max_element(var_of.begin(), var_of.end()) + 1);
     for (const ground::GroundOperator &op : task.operators) {
         std::set<int> pre_vars, changed;
         for (ground::FactId f : op.pre)
-            pre_vars.insert(var_of[f]);
+            if (!always_true[f])
+                pre_vars.insert(var_of[f]);
         for (ground::FactId f : op.add)
-            if (!std::binary_search(op.pre.begin(), op.pre.end(), f))
+            if (!always_true[f] && !std::binary_search(op.pre.begin(), op.pre.end(), f))
                 changed.insert(var_of[f]);
         for (ground::FactId f : op.del)
             changed.insert(var_of[f]);
@@ -213,12 +225,14 @@ FdOrder compute_fd_order(const ground::GroundTask &task) {
     std::set<int> goal_vars;
     for (ground::FactId f : task.goal)
         goal_vars.insert(var_of[f]);
-    std::vector<int> order = variable_order(causal_graph(task, var_of), goal_vars);
+    std::vector<bool> always_true = always_true_facts(task);
+    std::vector<int> order = variable_order(causal_graph(task, var_of, always_true), goal_vars);
     std::vector<int> position(vars.size());
     for (int i = 0; i < static_cast<int>(order.size()); ++i)
         position[order[i]] = i;
 
     FdOrder result;
+    result.always_true = always_true;
     result.fact_variable.resize(task.num_facts());
     for (ground::FactId f = 0; f < task.num_facts(); ++f)
         result.fact_variable[f] = position[var_of[f]];

@@ -24,6 +24,10 @@ struct FdOrder {
     std::vector<int> fact_variable;  // per fact: the position of its variable in FD's order
     std::vector<int> fact_rank;      // per fact: its position when sorted by (variable, value)
     std::vector<ground::OperatorId> operators;  // the task's operators in FD's order
+    // Facts true initially that no operator deletes: true in every reachable state. FD's
+    // translator drops them (they are static once unreachable adders are gone), so FD's
+    // preconditions never mention them; RelaxedTask and the successor order skip them too.
+    std::vector<bool> always_true;
 };
 
 FdOrder compute_fd_order(const ground::GroundTask &task);

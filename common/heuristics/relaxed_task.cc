@@ -18,7 +18,10 @@ std::vector<ground::FactId> fd_precondition_order(const ground::GroundOperator &
     auto is_changed = [&](ground::FactId f) {
         return std::find(changed.begin(), changed.end(), order.fact_variable[f]) != changed.end();
     };
-    std::vector<ground::FactId> pre = op.pre;
+    std::vector<ground::FactId> pre;
+    for (ground::FactId f : op.pre)
+        if (!order.always_true[f])
+            pre.push_back(f);
     std::stable_sort(pre.begin(), pre.end(), [&](ground::FactId a, ground::FactId b) {
         return std::pair(is_changed(a), order.fact_rank[a]) <
                std::pair(is_changed(b), order.fact_rank[b]);
@@ -56,7 +59,11 @@ RelaxedTask::RelaxedTask(const ground::GroundTask &task)
         const ground::GroundOperator &op = task.operators[id];
         add_operator(fd_precondition_order(op, order), by_rank(op.add, order), op.cost);
     }
-    add_operator(by_rank(task.goal, order), {artificial_goal()}, 0);
+    std::vector<ground::FactId> goal;
+    for (ground::FactId f : task.goal)
+        if (!order.always_true[f])
+            goal.push_back(f);
+    add_operator(by_rank(goal, order), {artificial_goal()}, 0);
     pre_of_ = invert(pre_, num_propositions());
     eff_of_ = invert(eff_, num_propositions());
 }

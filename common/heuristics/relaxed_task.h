@@ -12,7 +12,9 @@
 // Preconditions, effects and the goal are listed in the order FD's translator would give
 // them (fd_order.h): first the preconditions on variables the operator does not
 // change, then those it changes, each by variable. fact_rank() ranks facts the same way
-// for queueing a state's facts. These orders only decide ties, as in FD.
+// for queueing a state's facts. These orders only decide ties, as in FD. Preconditions and
+// goals that are true in every reachable state (FdOrder::always_true) are left out, as
+// FD's translator leaves them out; for states that lack them, estimates only get lower.
 
 #include "ground/ground_task.h"
 #include "heuristics/fd_order.h"

@@ -23,7 +23,8 @@ std::vector<int> fd_generation_ranks(const ground::GroundTask &task) {
     std::vector<std::vector<int>> keys(task.num_operators());
     for (ground::OperatorId op = 0; op < task.num_operators(); ++op) {
         for (ground::FactId fact : task.operators[op].pre)
-            keys[op].push_back(order.fact_rank[fact]);
+            if (!order.always_true[fact])
+                keys[op].push_back(order.fact_rank[fact]);
         std::sort(keys[op].begin(), keys[op].end());
     }
     std::vector<ground::OperatorId> ops = order.operators;
