@@ -7,6 +7,7 @@
 #include <queue>
 #include <set>
 #include <string>
+#include <tuple>
 
 namespace envdesign::heuristics {
 namespace {
@@ -239,8 +240,8 @@ FdOrder compute_fd_order(const ground::GroundTask &task) {
     std::vector<ground::FactId> facts(task.num_facts());
     std::iota(facts.begin(), facts.end(), 0);
     std::sort(facts.begin(), facts.end(), [&](ground::FactId a, ground::FactId b) {
-        return std::pair(result.fact_variable[a], value_of[a]) <
-               std::pair(result.fact_variable[b], value_of[b]);
+        return std::tuple(always_true[a], result.fact_variable[a], value_of[a]) <
+               std::tuple(always_true[b], result.fact_variable[b], value_of[b]);
     });
     result.fact_rank.resize(task.num_facts());
     for (int r = 0; r < task.num_facts(); ++r)

@@ -25,8 +25,9 @@ struct FdOrder {
     std::vector<int> fact_rank;      // per fact: its position when sorted by (variable, value)
     std::vector<ground::OperatorId> operators;  // the task's operators in FD's order
     // Facts true initially that no operator deletes: true in every reachable state. FD's
-    // translator drops them (they are static once unreachable adders are gone), so FD's
-    // preconditions never mention them; RelaxedTask and the successor order skip them too.
+    // translator drops them (they are static once unreachable adders are gone), so they
+    // never decide FD's ties: they rank after all other facts, and the successor order
+    // ignores them.
     std::vector<bool> always_true;
 };
 

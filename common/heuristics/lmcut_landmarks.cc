@@ -219,9 +219,19 @@ void LmCutLandmarks::second_exploration() {
     const int artificial = relaxed_.artificial_precondition();
     zone[artificial] = before;
     stack[top++] = artificial;
-    for (ground::FactId fact : ranked_facts_) {
-        zone[fact] = before;
-        stack[top++] = fact;
+    // FD has no always-true facts; what they support, FD's artificial precondition would,
+    // and that sits at the bottom of FD's stack. So they go below the other facts.
+    const int first_always_true = relaxed_.first_always_true_rank();
+    auto regular_end = std::partition_point(
+        ranked_facts_.begin(), ranked_facts_.end(),
+        [&](ground::FactId f) { return relaxed_.fact_rank(f) < first_always_true; });
+    for (auto it = regular_end; it != ranked_facts_.end(); ++it) {
+        zone[*it] = before;
+        stack[top++] = *it;
+    }
+    for (auto it = ranked_facts_.begin(); it != regular_end; ++it) {
+        zone[*it] = before;
+        stack[top++] = *it;
     }
     while (top > 0) {
         const int prop = stack[--top];

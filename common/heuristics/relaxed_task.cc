@@ -1,6 +1,7 @@
 #include "heuristics/relaxed_task.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace envdesign::heuristics {
 namespace {
@@ -18,13 +19,10 @@ std::vector<ground::FactId> fd_precondition_order(const ground::GroundOperator &
     auto is_changed = [&](ground::FactId f) {
         return std::find(changed.begin(), changed.end(), order.fact_variable[f]) != changed.end();
     };
-    std::vector<ground::FactId> pre;
-    for (ground::FactId f : op.pre)
-        if (!order.always_true[f])
-            pre.push_back(f);
+    std::vector<ground::FactId> pre = op.pre;
     std::stable_sort(pre.begin(), pre.end(), [&](ground::FactId a, ground::FactId b) {
-        return std::pair(is_changed(a), order.fact_rank[a]) <
-               std::pair(is_changed(b), order.fact_rank[b]);
+        return std::tuple(order.always_true[a], is_changed(a), order.fact_rank[a]) <
+               std::tuple(order.always_true[b], is_changed(b), order.fact_rank[b]);
     });
     return pre;
 }
@@ -42,6 +40,8 @@ RelaxedTask::RelaxedTask(const ground::GroundTask &task)
     : num_facts_(task.num_facts()), num_task_operators_(task.num_operators()) {
     FdOrder order = compute_fd_order(task);
     fact_rank_ = order.fact_rank;
+    first_always_true_rank_ = static_cast<int>(
+        std::count(order.always_true.begin(), order.always_true.end(), false));
     costs_.reserve(num_operators());
     auto add_operator = [&](const std::vector<ground::FactId> &pre,
                             const std::vector<ground::FactId> &eff, int cost) {
@@ -59,11 +59,7 @@ RelaxedTask::RelaxedTask(const ground::GroundTask &task)
         const ground::GroundOperator &op = task.operators[id];
         add_operator(fd_precondition_order(op, order), by_rank(op.add, order), op.cost);
     }
-    std::vector<ground::FactId> goal;
-    for (ground::FactId f : task.goal)
-        if (!order.always_true[f])
-            goal.push_back(f);
-    add_operator(by_rank(goal, order), {artificial_goal()}, 0);
+    add_operator(by_rank(task.goal, order), {artificial_goal()}, 0);
     pre_of_ = invert(pre_, num_propositions());
     eff_of_ = invert(eff_, num_propositions());
 }

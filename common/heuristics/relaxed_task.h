@@ -12,9 +12,9 @@
 // Preconditions, effects and the goal are listed in the order FD's translator would give
 // them (fd_order.h): first the preconditions on variables the operator does not
 // change, then those it changes, each by variable. fact_rank() ranks facts the same way
-// for queueing a state's facts. These orders only decide ties, as in FD. Preconditions and
-// goals that are true in every reachable state (FdOrder::always_true) are left out, as
-// FD's translator leaves them out; for states that lack them, estimates only get lower.
+// for queueing a state's facts. These orders only decide ties, as in FD. Facts true in
+// every reachable state (FdOrder::always_true), which FD's translator drops, come last in
+// these orders, so that they never win a tie FD would not see.
 
 #include "ground/ground_task.h"
 #include "heuristics/fd_order.h"
@@ -39,6 +39,8 @@ public:
     ground::OperatorId task_operator(int op) const { return task_operators_[op]; }
     // Position of each fact in FD's (variable, value) order.
     int fact_rank(ground::FactId fact) const { return fact_rank_[fact]; }
+    // Facts of rank >= this are always true (FdOrder::always_true).
+    int first_always_true_rank() const { return first_always_true_rank_; }
     std::span<const int> preconditions(int op) const { return slice(pre_, op); }
     std::span<const int> effects(int op) const { return slice(eff_, op); }
     std::span<const int> precondition_of(int prop) const { return slice(pre_of_, prop); }
@@ -69,6 +71,7 @@ private:
     int num_task_operators_;
     std::vector<int> costs_;
     std::vector<int> fact_rank_;
+    int first_always_true_rank_ = 0;
     std::vector<ground::OperatorId> task_operators_;
     Csr pre_;
     Csr eff_;
