@@ -36,7 +36,8 @@ public:
         for (const auto &configuration : batch) {
             auto answers = script_(configuration);
             ConfigurationEvaluation e{configuration, EvaluationStatus::COMPLETE,
-                                      std::vector<std::optional<TaskExplicability>>(answers.size())};
+                                      std::vector<std::optional<TaskExplicability>>(answers.size()),
+                                      {}};
             for (std::size_t t = 0; t < answers.size() && e.status == EvaluationStatus::COMPLETE; ++t) {
                 if (callbacks.abandon(e))
                     e.status = EvaluationStatus::CUT_OFF;

@@ -153,5 +153,43 @@ TEST(Compilation, RenamesFluentsAndKeepsBothModelsConditions) {
     EXPECT_EQ(c.problem.function_values.size(), 4u + 5u);
 }
 
+// The human's domain names the parameters differently and lacks the robot's `teleport`:
+// P_mod renames the human's variables by position and has no `teleport` (no plan with it
+// is valid for the human).
+TEST(Compilation, ActionsMatchByNameAndParametersByPosition) {
+    ModelPair m = load(ROADS, "domain.pddl", "robot.pddl", "human.pddl");
+    m.human_domain = pddl::parse_domain(pddl::read_sexpr(R"((define (domain roads)
+      (:requirements :strips :typing :action-costs)
+      (:types place)
+      (:predicates (at ?p - place) (road ?from ?to - place) (visited ?p - place))
+      (:functions (total-cost) - number (road-cost ?from ?to - place) - number)
+      (:action drive :parameters (?a ?b - place)
+        :precondition (and (at ?a) (road ?a ?b))
+        :effect (and (at ?b) (not (at ?a)) (increase (total-cost) (road-cost ?a ?b))))))",
+                                                         "human.pddl"),
+                                        "human.pddl");
+    m.human_problem = pddl::parse_problem_file(ROADS + "human.pddl", m.human_domain);
+    pddl::Action teleport = m.robot_domain.actions[0];
+    teleport.name = "teleport";
+    m.robot_domain.actions.push_back(teleport);
+    CompiledTask c = compile_explicable(m);
+    ASSERT_EQ(c.domain.actions.size(), 1u);
+    std::vector<std::string> pre;
+    for (const auto &l : c.domain.actions[0].precondition)
+        pre.push_back(l.to_string());
+    EXPECT_EQ(pre, (std::vector<std::string>{"(r-at ?from)", "(r-road ?from ?to)", "(h-at ?from)",
+                                             "(h-road ?from ?to)"}));
+    EXPECT_EQ(c.domain.actions[0].costs[0].function->to_string(), "(h-road-cost ?from ?to)");
+    TaskExplicability e = evaluate(m);
+    EXPECT_EQ(e.robot_cost, 2);
+    EXPECT_EQ(e.human_plan_cost, 4);
+}
+
+TEST(Compilation, ParameterCountsMustAgree) {
+    ModelPair m = load(ROADS, "domain.pddl", "robot.pddl", "human.pddl");
+    m.human_domain.actions[0].parameters.pop_back();
+    EXPECT_THROW(compile_explicable(m), pddl::ParseError);
+}
+
 }  // namespace
 }  // namespace envdesign::design
