@@ -12,7 +12,7 @@ struct KeyGreater {
     }
 };
 
-}  // namespace
+} // namespace
 
 void AdaptiveQueue::clear() {
     if (heap_mode_) {
@@ -57,4 +57,4 @@ void AdaptiveQueue::switch_to_heap() {
     heap_mode_ = true;
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -68,7 +68,7 @@ private:
     int num_pushes_ = 0;
     int current_bucket_ = 0;
     std::vector<std::vector<int>> buckets_;
-    std::vector<Entry> heap_;  // a binary min-heap on the key only
+    std::vector<Entry> heap_; // a binary min-heap on the key only
 };
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

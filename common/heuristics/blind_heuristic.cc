@@ -20,4 +20,4 @@ int BlindHeuristic::compute(const StateView &state) {
     return 0;
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -18,4 +18,4 @@ private:
     int min_operator_cost_ = 0;
 };
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -12,7 +12,7 @@
 namespace envdesign::heuristics {
 namespace {
 
-using Graph = std::vector<std::map<int, int>>;  // source -> (target -> weight)
+using Graph = std::vector<std::map<int, int>>; // source -> (target -> weight)
 constexpr int GOAL_EDGE_BONUS = 100000;
 
 // FD sorts atoms by (predicate, arguments): "(at a b)" -> {"at", "a", "b"}.
@@ -202,7 +202,7 @@ std::vector<int> variable_order(const Graph &graph, const std::set<int> &goal_va
             for (const auto &[target, weight] : graph[var]) {
                 if (!members.count(target))
                     continue;
-                if (goal_vars.count(target))  // FD lists goal edges twice, once boosted
+                if (goal_vars.count(target)) // FD lists goal edges twice, once boosted
                     out.emplace_back(target, GOAL_EDGE_BONUS + weight);
                 out.emplace_back(target, weight);
             }
@@ -213,7 +213,7 @@ std::vector<int> variable_order(const Graph &graph, const std::set<int> &goal_va
     return order;
 }
 
-}  // namespace
+} // namespace
 
 FdOrder compute_fd_order(const ground::GroundTask &task) {
     std::vector<std::vector<ground::FactId>> vars = sorted_variables(task);
@@ -256,4 +256,4 @@ FdOrder compute_fd_order(const ground::GroundTask &task) {
     return result;
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -21,9 +21,9 @@
 namespace envdesign::heuristics {
 
 struct FdOrder {
-    std::vector<int> fact_variable;  // per fact: the position of its variable in FD's order
-    std::vector<int> fact_rank;      // per fact: its position when sorted by (variable, value)
-    std::vector<ground::OperatorId> operators;  // the task's operators in FD's order
+    std::vector<int> fact_variable; // per fact: the position of its variable in FD's order
+    std::vector<int> fact_rank;     // per fact: its position when sorted by (variable, value)
+    std::vector<ground::OperatorId> operators; // the task's operators in FD's order
     // Facts true initially that no operator deletes: true in every reachable state. FD's
     // translator drops them (they are static once unreachable adders are gone), so they
     // never decide FD's ties: they rank after all other facts, and the successor order
@@ -33,4 +33,4 @@ struct FdOrder {
 
 FdOrder compute_fd_order(const ground::GroundTask &task);
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -46,4 +46,4 @@ std::string_view heuristic_kind_name(HeuristicKind kind) {
     return "unknown";
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -60,4 +60,4 @@ HeuristicKind parse_heuristic_kind(std::string_view name);
 
 std::string_view heuristic_kind_name(HeuristicKind kind);
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -22,9 +22,9 @@ int HMaxHeuristic::compute(const StateView &state) {
     while (!queue_.empty()) {
         auto [cost, prop] = queue_.pop();
         if (cost > prop_cost_[prop])
-            continue;  // a stale entry: the proposition was reached more cheaply since
+            continue; // a stale entry: the proposition was reached more cheaply since
         if (prop == goal)
-            break;  // later pops cannot lower the goal's cost
+            break; // later pops cannot lower the goal's cost
         for (int op : relaxed_.precondition_of(prop)) {
             // The last precondition to be popped is the most expensive one, so it fixes
             // the operator's h^max cost.
@@ -38,4 +38,4 @@ int HMaxHeuristic::compute(const StateView &state) {
     return prop_cost_[goal];
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

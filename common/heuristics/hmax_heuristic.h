@@ -25,10 +25,10 @@ private:
     }
 
     RelaxedTask relaxed_;
-    std::vector<int> prop_cost_;       // DEAD_END while unreached
-    std::vector<int> unsatisfied_;     // per operator: preconditions not yet reached
+    std::vector<int> prop_cost_;   // DEAD_END while unreached
+    std::vector<int> unsatisfied_; // per operator: preconditions not yet reached
     std::vector<int> num_preconditions_;
     AdaptiveQueue queue_;
 };
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

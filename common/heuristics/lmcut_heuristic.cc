@@ -7,4 +7,4 @@ int LmCutHeuristic::compute(const StateView &state) {
     return landmarks_.compute(state.facts());
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -16,4 +16,4 @@ private:
     LmCutLandmarks landmarks_;
 };
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -9,8 +9,8 @@
 namespace envdesign::heuristics {
 
 LmCutLandmarks::LmCutLandmarks(const ground::GroundTask &task)
-    : relaxed_(task), ops_(relaxed_.num_operators()),
-      num_preconditions_(relaxed_.num_operators()), prop_cost_(relaxed_.num_propositions()),
+    : relaxed_(task), ops_(relaxed_.num_operators()), num_preconditions_(relaxed_.num_operators()),
+      prop_cost_(relaxed_.num_propositions()),
       precondition_bit_(relaxed_.num_precondition_entries()),
       zone_(relaxed_.num_propositions(), 0) {
     for (int op = 0; op < relaxed_.num_operators(); ++op) {
@@ -67,8 +67,7 @@ int LmCutLandmarks::compute(std::span<const ground::FactId> facts, const CutCall
     return total;
 }
 
-template <class Visit>
-void LmCutLandmarks::for_each_supported(int prop, Visit visit) {
+template <class Visit> void LmCutLandmarks::for_each_supported(int prop, Visit visit) {
     const std::span<const int> users = relaxed_.precondition_of(prop);
     for (int w = mask_offset_[prop]; w < mask_offset_[prop + 1]; ++w) {
         const int base = (w - mask_offset_[prop]) * 64;
@@ -222,9 +221,10 @@ void LmCutLandmarks::second_exploration() {
     // FD has no always-true facts; what they support, FD's artificial precondition would,
     // and that sits at the bottom of FD's stack. So they go below the other facts.
     const int first_always_true = relaxed_.first_always_true_rank();
-    auto regular_end = std::partition_point(
-        ranked_facts_.begin(), ranked_facts_.end(),
-        [&](ground::FactId f) { return relaxed_.fact_rank(f) < first_always_true; });
+    auto regular_end =
+        std::partition_point(ranked_facts_.begin(), ranked_facts_.end(), [&](ground::FactId f) {
+            return relaxed_.fact_rank(f) < first_always_true;
+        });
     for (auto it = regular_end; it != ranked_facts_.end(); ++it) {
         zone[*it] = before;
         stack[top++] = *it;
@@ -262,4 +262,4 @@ void LmCutLandmarks::second_exploration() {
     assert(std::all_of(cut_.begin(), cut_.end(), [&](int op) { return ops_[op].cost > 0; }));
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

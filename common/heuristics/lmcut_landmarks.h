@@ -53,17 +53,17 @@ private:
     static constexpr int UNREACHED = 0x7fffffff;
 
     struct OperatorData {
-        int cost;            // remaining cost in this computation
-        int unsatisfied;     // preconditions not yet reached (first exploration)
-        int supporter;       // h^max supporter proposition, -1 while unreached
-        int supporter_cost;  // h^max cost of the supporter
-        int supporter_bit;   // this operator's bit in the supporter's mask
+        int cost;           // remaining cost in this computation
+        int unsatisfied;    // preconditions not yet reached (first exploration)
+        int supporter;      // h^max supporter proposition, -1 while unreached
+        int supporter_cost; // h^max cost of the supporter
+        int supporter_bit;  // this operator's bit in the supporter's mask
     };
 
     void first_exploration(std::span<const ground::FactId> facts);
     void first_exploration_incremental();
     void mark_goal_plateau();
-    void second_exploration();  // from ranked_facts_, set by first_exploration
+    void second_exploration(); // from ranked_facts_, set by first_exploration
     void next_zone_stamps();
     void update_supporter(int op);
     void set_supporter(int op, int prop, int bit);
@@ -76,19 +76,18 @@ private:
     bool in_goal_zone(int prop) const { return zone_[prop] == goal_zone_stamp_; }
     // Calls visit(op) for each operator `prop` supports, in increasing id order. Bits are
     // read a word at a time, so visit may move the current operator to another supporter.
-    template <class Visit>
-    void for_each_supported(int prop, Visit visit);
+    template <class Visit> void for_each_supported(int prop, Visit visit);
 
     RelaxedTask relaxed_;
     std::vector<OperatorData> ops_;
     std::vector<int> num_preconditions_;
-    std::vector<int> prop_cost_;  // h^max cost, UNREACHED if not reached
+    std::vector<int> prop_cost_; // h^max cost, UNREACHED if not reached
     // One per precondition_of entry (same flat index): the operator and its effects, so
     // the hot loops reach an operator's first effect with one load instead of three.
     struct Trigger {
         int op;
         int first_effect;  // -1 if the operator has no effects
-        int effects_begin;  // into relaxed_.effect_items()
+        int effects_begin; // into relaxed_.effect_items()
         int effects_end;
     };
     std::vector<Trigger> triggers_;
@@ -106,8 +105,8 @@ private:
     AdaptiveQueue queue_;
     std::vector<int> stack_;
     std::vector<int> cut_;
-    std::vector<ground::FactId> ranked_facts_;  // the state's facts in FD's order
+    std::vector<ground::FactId> ranked_facts_; // the state's facts in FD's order
     std::vector<ground::OperatorId> landmark_;
 };
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -34,14 +34,14 @@ std::vector<ground::FactId> by_rank(std::vector<ground::FactId> facts, const FdO
     return facts;
 }
 
-}  // namespace
+} // namespace
 
 RelaxedTask::RelaxedTask(const ground::GroundTask &task)
     : num_facts_(task.num_facts()), num_task_operators_(task.num_operators()) {
     FdOrder order = compute_fd_order(task);
     fact_rank_ = order.fact_rank;
-    first_always_true_rank_ = static_cast<int>(
-        std::count(order.always_true.begin(), order.always_true.end(), false));
+    first_always_true_rank_ =
+        static_cast<int>(std::count(order.always_true.begin(), order.always_true.end(), false));
     costs_.reserve(num_operators());
     auto add_operator = [&](const std::vector<ground::FactId> &pre,
                             const std::vector<ground::FactId> &eff, int cost) {
@@ -82,4 +82,4 @@ RelaxedTask::Csr RelaxedTask::invert(const Csr &lists, int num_targets) {
     return result;
 }
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

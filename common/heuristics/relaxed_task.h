@@ -79,4 +79,4 @@ private:
     Csr eff_of_;
 };
 
-}  // namespace envdesign::heuristics
+} // namespace envdesign::heuristics

@@ -22,13 +22,12 @@ heuristics::StateView view_of(const UnpackedState &state) {
     return heuristics::StateView(state.facts, state.bits);
 }
 
-}  // namespace
+} // namespace
 
 AStarSearch::AStarSearch(const ground::GroundTask &task, heuristics::Heuristic &heuristic,
                          SearchLimits limits)
-    : task_(task), heuristic_(heuristic), limits_(limits),
-      start_(std::chrono::steady_clock::now()), use_secondary_(has_secondary_costs(task)),
-      registry_(task), successors_(task),
+    : task_(task), heuristic_(heuristic), limits_(limits), start_(std::chrono::steady_clock::now()),
+      use_secondary_(has_secondary_costs(task)), registry_(task), successors_(task),
       open_list_(make_open_list(use_secondary_, max_operator_cost(task))),
       current_(registry_.codec()), successor_(registry_.codec()) {
     result_.stats.bytes_per_state = registry_.bytes_per_state();
@@ -139,7 +138,7 @@ void AStarSearch::generate(StateID parent_id, ground::OperatorId op) {
     if (std::pair(candidate.g, candidate_secondary) < std::pair(node.g, secondary_g(succ.id))) {
         if (status == NodeStatus::CLOSED)
             ++result_.stats.reopened;
-        candidate.h = node.h;  // cached: heuristics here are not path-dependent
+        candidate.h = node.h; // cached: heuristics here are not path-dependent
         open(succ.id, candidate, candidate_secondary);
     }
 }
@@ -185,4 +184,4 @@ SearchResult astar(const ground::GroundTask &task, heuristics::HeuristicKind kin
     return search.result();
 }
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

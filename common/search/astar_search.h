@@ -37,7 +37,7 @@ namespace envdesign::search {
 enum class SearchStatus { IN_PROGRESS, SOLVED, FAILED, LIMIT };
 
 struct SearchLimits {
-    double time_limit_s = 0;            // wall clock from construction; <= 0: none
+    double time_limit_s = 0; // wall clock from construction; <= 0: none
     // Bytes of search data this search owns (state registry, per-state data, open list),
     // not the process size; 0: none. Both limits are checked every CHECK_INTERVAL steps.
     std::size_t memory_limit_bytes = 0;
@@ -48,20 +48,20 @@ struct SearchStatistics {
     // Expansions before the first state of the final f layer was expanded (FD's "expanded
     // until last jump"): the part of the effort that tie-breaking cannot change.
     long long expanded_until_last_jump = 0;
-    long long generated = 0;   // successors produced, duplicates included
-    long long evaluated = 0;   // heuristic evaluations, the initial state included
+    long long generated = 0; // successors produced, duplicates included
+    long long evaluated = 0; // heuristic evaluations, the initial state included
     long long reopened = 0;
     long long dead_ends = 0;
     long long registered_states = 0;
-    std::size_t bytes_per_state = 0;  // packed state size in the registry
+    std::size_t bytes_per_state = 0; // packed state size in the registry
     int initial_h = 0;
     double search_seconds = 0;
 };
 
 struct SearchResult {
     SearchStatus status = SearchStatus::IN_PROGRESS;
-    std::vector<ground::OperatorId> plan;  // only when SOLVED
-    long long cost = 0;                     // primary cost of the plan
+    std::vector<ground::OperatorId> plan; // only when SOLVED
+    long long cost = 0;                   // primary cost of the plan
     long long secondary_cost = 0;
     SearchStatistics stats;
 };
@@ -116,8 +116,8 @@ private:
     PerStateInformation<NodeStatus> statuses_{NodeStatus::NEW};
     PerStateInformation<long long> secondary_g_;
     std::unique_ptr<OpenList> open_list_;
-    UnpackedState current_;    // the state being expanded
-    UnpackedState successor_;  // scratch for evaluating a new successor
+    UnpackedState current_;   // the state being expanded
+    UnpackedState successor_; // scratch for evaluating a new successor
     std::vector<ground::OperatorId> applicable_;
     SearchResult result_;
     int last_jump_f_ = -1;
@@ -127,4 +127,4 @@ private:
 SearchResult astar(const ground::GroundTask &task, heuristics::HeuristicKind kind,
                    const SearchLimits &limits = {});
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

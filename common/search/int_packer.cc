@@ -16,7 +16,7 @@ int bits_for_range(int range) {
     return bits;
 }
 
-}  // namespace
+} // namespace
 
 IntPacker::IntPacker(const std::vector<int> &ranges) : variables_(ranges.size()) {
     std::vector<int> order(ranges.size());
@@ -35,7 +35,7 @@ IntPacker::IntPacker(const std::vector<int> &ranges) : variables_(ranges.size())
     for (int var : order) {
         VariableInfo &info = variables_[var];
         if (info.bits == 0)
-            continue;  // a constant: bin 0, shift 0, mask 0
+            continue; // a constant: bin 0, shift 0, mask 0
         std::size_t bin = 0;
         while (bin < used_bits.size() && used_bits[bin] + info.bits > BITS_PER_BIN)
             ++bin;
@@ -49,4 +49,4 @@ IntPacker::IntPacker(const std::vector<int> &ranges) : variables_(ranges.size())
     num_bins_ = std::max<int>(static_cast<int>(used_bits.size()), ranges.empty() ? 0 : 1);
 }
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

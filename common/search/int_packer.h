@@ -42,11 +42,11 @@ private:
         int bin = 0;
         int shift = 0;
         int bits = 0;
-        Bin mask = 0;  // `bits` low bits set
+        Bin mask = 0; // `bits` low bits set
     };
 
     std::vector<VariableInfo> variables_;
     int num_bins_ = 0;
 };
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

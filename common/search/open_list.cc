@@ -74,4 +74,4 @@ std::unique_ptr<OpenList> make_open_list(bool use_secondary, int max_operator_co
     return std::make_unique<HeapOpenList>();
 }
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

@@ -49,12 +49,12 @@ private:
     struct FBucket {
         std::vector<Fifo> by_h;
         std::size_t size = 0;
-        int min_h = 0;  // no entry has a smaller h (a lower bound, tightened on pop)
+        int min_h = 0; // no entry has a smaller h (a lower bound, tightened on pop)
     };
 
     std::vector<FBucket> by_f_;
     std::size_t size_ = 0;
-    int min_f_ = 0;  // no entry has a smaller f
+    int min_f_ = 0; // no entry has a smaller f
 };
 
 class HeapOpenList : public OpenList {
@@ -67,7 +67,7 @@ public:
 private:
     struct Entry {
         OpenKey key;
-        std::uint64_t order;  // insertion counter: FIFO among equal keys
+        std::uint64_t order; // insertion counter: FIFO among equal keys
         StateID id;
     };
     struct Later {
@@ -81,4 +81,4 @@ private:
 // The bucket list when `use_secondary` is false and f stays moderate, else the heap.
 std::unique_ptr<OpenList> make_open_list(bool use_secondary, int max_operator_cost);
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

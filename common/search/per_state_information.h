@@ -9,8 +9,7 @@
 
 namespace envdesign::search {
 
-template <class T>
-class PerStateInformation {
+template <class T> class PerStateInformation {
 public:
     explicit PerStateInformation(T default_value = T()) : default_(default_value) {}
 
@@ -29,4 +28,4 @@ private:
     std::vector<T> entries_;
 };
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

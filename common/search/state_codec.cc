@@ -65,7 +65,7 @@ std::vector<int> variable_ranges(const std::vector<std::vector<ground::FactId>> 
     return ranges;
 }
 
-}  // namespace
+} // namespace
 
 UnpackedState::UnpackedState(const StateCodec &codec) : bits(codec.num_bitset_words(), 0) {
     facts.reserve(codec.num_facts());
@@ -146,4 +146,4 @@ void StateCodec::apply(const Bin *parent, ground::OperatorId op, Bin *out) const
     }
 }
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

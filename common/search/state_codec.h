@@ -4,8 +4,9 @@
 // Each mutex group of the task becomes one variable whose value is the index of its true
 // fact in the group, or |group| for "none of them"; each fact in no group becomes a 1-bit
 // variable. Variables that provably always have a true fact (see exactly_one_variables in
-// the .cc) get no "none" value, as FD's do, which often saves a bit per group. The codec packs and unpacks states and applies an operator directly to a
-// packed state (delete effects before add effects, so add wins, as in PDDL).
+// the .cc) get no "none" value, as FD's do, which often saves a bit per group. The codec packs and
+// unpacks states and applies an operator directly to a packed state (delete effects before add
+// effects, so add wins, as in PDDL).
 //
 // Example:
 //   StateCodec codec(task);
@@ -59,20 +60,20 @@ private:
     struct Effect {
         int var;
         int value;
-        int only_if;  // NO_CONDITION, or the value the variable must have for the effect
+        int only_if; // NO_CONDITION, or the value the variable must have for the effect
     };
 
     void compile_effects(const ground::GroundTask &task);
 
     // One variable per group (facts listed), then one per ungrouped fact.
     std::vector<std::vector<ground::FactId>> var_facts_;
-    std::vector<bool> exactly_one_;  // per variable: never "none" in reachable states
-    std::vector<int> fact_var_;    // the variable of each fact
-    std::vector<int> fact_value_;  // the value of its variable that means "this fact is true"
-    std::vector<int> none_value_;  // per variable: the value meaning "no fact of it true"
+    std::vector<bool> exactly_one_; // per variable: never "none" in reachable states
+    std::vector<int> fact_var_;     // the variable of each fact
+    std::vector<int> fact_value_;   // the value of its variable that means "this fact is true"
+    std::vector<int> none_value_;   // per variable: the value meaning "no fact of it true"
     IntPacker packer_;
-    std::vector<int> effect_offsets_;  // effects of op i: effects_[offsets[i]..offsets[i+1])
+    std::vector<int> effect_offsets_; // effects of op i: effects_[offsets[i]..offsets[i+1])
     std::vector<Effect> effects_;
 };
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

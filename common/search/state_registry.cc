@@ -18,11 +18,11 @@ std::uint64_t mix(std::uint64_t h) {
     return h;
 }
 
-}  // namespace
+} // namespace
 
 StateRegistry::StateRegistry(const ground::GroundTask &task)
-    : codec_(task), stride_(std::max(1, codec_.num_bins())),
-      table_(INITIAL_TABLE_SIZE, NO_STATE), table_mask_(INITIAL_TABLE_SIZE - 1) {}
+    : codec_(task), stride_(std::max(1, codec_.num_bins())), table_(INITIAL_TABLE_SIZE, NO_STATE),
+      table_mask_(INITIAL_TABLE_SIZE - 1) {}
 
 InsertResult StateRegistry::insert_facts(const std::vector<ground::FactId> &facts) {
     data_.resize(data_.size() + stride_, 0);
@@ -88,4 +88,4 @@ std::size_t StateRegistry::memory_bytes() const {
     return data_.capacity() * sizeof(Bin) + table_.capacity() * sizeof(StateID);
 }
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

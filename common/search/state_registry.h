@@ -70,8 +70,8 @@ private:
     int stride_;
     std::size_t num_states_ = 0;
     std::vector<Bin> data_;
-    std::vector<StateID> table_;  // power-of-two size, NO_STATE marks an empty slot
+    std::vector<StateID> table_; // power-of-two size, NO_STATE marks an empty slot
     std::size_t table_mask_ = 0;
 };
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

@@ -28,16 +28,15 @@ std::vector<int> fd_generation_ranks(const ground::GroundTask &task) {
         std::sort(keys[op].begin(), keys[op].end());
     }
     std::vector<ground::OperatorId> ops = order.operators;
-    std::stable_sort(ops.begin(), ops.end(), [&](ground::OperatorId a, ground::OperatorId b) {
-        return keys[a] < keys[b];
-    });
+    std::stable_sort(ops.begin(), ops.end(),
+                     [&](ground::OperatorId a, ground::OperatorId b) { return keys[a] < keys[b]; });
     std::vector<int> rank(task.num_operators());
     for (int i = 0; i < task.num_operators(); ++i)
         rank[ops[i]] = i;
     return rank;
 }
 
-}  // namespace
+} // namespace
 
 SuccessorGenerator::SuccessorGenerator(const ground::GroundTask &task)
     : generation_rank_(fd_generation_ranks(task)) {
@@ -87,4 +86,4 @@ void SuccessorGenerator::applicable_operators(const UnpackedState &state,
     });
 }
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

@@ -28,12 +28,12 @@ public:
                               std::vector<ground::OperatorId> &out) const;
 
 private:
-    std::vector<int> keyed_offsets_;            // per fact: range in keyed_operators_
+    std::vector<int> keyed_offsets_; // per fact: range in keyed_operators_
     std::vector<ground::OperatorId> keyed_operators_;
     std::vector<ground::OperatorId> unconditional_;
-    std::vector<int> rest_offsets_;             // per operator: its non-key preconditions
+    std::vector<int> rest_offsets_; // per operator: its non-key preconditions
     std::vector<ground::FactId> rest_;
-    std::vector<int> generation_rank_;          // per operator: position in FD's order
+    std::vector<int> generation_rank_; // per operator: position in FD's order
 };
 
-}  // namespace envdesign::search
+} // namespace envdesign::search

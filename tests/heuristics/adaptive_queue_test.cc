@@ -17,7 +17,7 @@ TEST(AdaptiveQueue, BucketModeIsLifoWithinAKey) {
     q.push(0, 13);
     EXPECT_EQ(q.pop(), std::make_pair(0, 13));
     EXPECT_EQ(q.pop(), std::make_pair(0, 11));
-    q.push(1, 14);  // below the current bucket after pops: must still come first
+    q.push(1, 14); // below the current bucket after pops: must still come first
     EXPECT_EQ(q.pop(), std::make_pair(1, 14));
     EXPECT_EQ(q.pop(), std::make_pair(2, 12));
     EXPECT_EQ(q.pop(), std::make_pair(2, 10));
@@ -61,5 +61,5 @@ TEST(AdaptiveQueue, HeapModeKeepsKeyOrder) {
     }
 }
 
-}  // namespace
-}  // namespace envdesign::heuristics
+} // namespace
+} // namespace envdesign::heuristics

@@ -58,5 +58,5 @@ TEST(FdOrder, OperatorsSortedByName) {
     EXPECT_EQ(order.operators, (std::vector<ground::OperatorId>{2, 3, 1, 0}));
 }
 
-}  // namespace
-}  // namespace envdesign::heuristics
+} // namespace
+} // namespace envdesign::heuristics

@@ -48,5 +48,5 @@ TEST(BlindHeuristic, ZeroCostOperatorsGiveZero) {
     EXPECT_EQ(evaluate(*make_heuristic(HeuristicKind::BLIND, task), task, {0}), 0);
 }
 
-}  // namespace
-}  // namespace envdesign::heuristics
+} // namespace
+} // namespace envdesign::heuristics

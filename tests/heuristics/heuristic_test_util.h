@@ -39,4 +39,4 @@ inline int evaluate(Heuristic &h, const ground::GroundTask &task,
     return h.compute(StateView(facts, bits));
 }
 
-}  // namespace envdesign::heuristics::testing
+} // namespace envdesign::heuristics::testing

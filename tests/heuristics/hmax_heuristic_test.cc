@@ -23,7 +23,7 @@ ground::GroundTask chain_task(std::vector<ground::FactId> goal) {
 TEST(HMaxHeuristic, CheapestPathThroughAChain) {
     auto task = chain_task({3});
     HMaxHeuristic h(task);
-    EXPECT_EQ(evaluate(h, task, {0}), 6);  // a-b-c-d: 2 + 3 + 1 beats a-c-d: 7 + 1
+    EXPECT_EQ(evaluate(h, task, {0}), 6); // a-b-c-d: 2 + 3 + 1 beats a-c-d: 7 + 1
     EXPECT_EQ(evaluate(h, task, {1}), 4);
     EXPECT_EQ(evaluate(h, task, {2}), 1);
     EXPECT_EQ(evaluate(h, task, {3}), 0);
@@ -32,7 +32,7 @@ TEST(HMaxHeuristic, CheapestPathThroughAChain) {
 TEST(HMaxHeuristic, ConjunctionsCostTheirMaximum) {
     auto task = chain_task({1, 2, 4});
     HMaxHeuristic h(task);
-    EXPECT_EQ(evaluate(h, task, {0}), 10);   // max(2, 5, 10)
+    EXPECT_EQ(evaluate(h, task, {0}), 10); // max(2, 5, 10)
     EXPECT_EQ(evaluate(h, task, {0, 4}), 5);
     // From {b, x} the zero-cost {b,x}->d and c via b->c.
     auto goal_d = chain_task({3, 4});
@@ -43,7 +43,7 @@ TEST(HMaxHeuristic, ConjunctionsCostTheirMaximum) {
 TEST(HMaxHeuristic, UnreachableGoalIsADeadEnd) {
     auto task = chain_task({0});
     HMaxHeuristic h(task);
-    EXPECT_EQ(evaluate(h, task, {1}), DEAD_END);  // nothing adds a
+    EXPECT_EQ(evaluate(h, task, {1}), DEAD_END); // nothing adds a
     EXPECT_EQ(evaluate(h, task, {0}), 0);
 }
 
@@ -68,12 +68,12 @@ TEST(HMaxHeuristic, RepeatedCallsDoNotLeakState) {
 
 // Large costs switch the exploration queue to its heap mode; values must not change.
 TEST(HMaxHeuristic, LargeCosts) {
-    auto task = make_task(4, {op({0}, {1}, 1000), op({1}, {2}, 2500), op({0}, {2}, 4000),
-                              op({2}, {3}, 123456)},
-                          {0}, {3});
+    auto task = make_task(
+        4, {op({0}, {1}, 1000), op({1}, {2}, 2500), op({0}, {2}, 4000), op({2}, {3}, 123456)}, {0},
+        {3});
     HMaxHeuristic h(task);
     EXPECT_EQ(evaluate(h, task, {0}), 3500 + 123456);
 }
 
-}  // namespace
-}  // namespace envdesign::heuristics
+} // namespace
+} // namespace envdesign::heuristics

@@ -47,8 +47,8 @@ TEST(LmCutLandmarks, ClassicExampleCutsInOrder) {
 // Each operator achieves two of three goals: h+ = 2, but LM-cut stops after one cut of cost
 // 1 (the achievers of one goal), whatever the tie-breaking.
 TEST(LmCutHeuristic, CanBeBelowHPlus) {
-    auto task = make_task(4, {op({0}, {1, 2}, 1), op({0}, {2, 3}, 1), op({0}, {1, 3}, 1)}, {0},
-                          {1, 2, 3});
+    auto task =
+        make_task(4, {op({0}, {1, 2}, 1), op({0}, {2, 3}, 1), op({0}, {1, 3}, 1)}, {0}, {1, 2, 3});
     LmCutLandmarks lmcut(task);
     int h = 0;
     std::vector<Cut> cuts = cuts_of(lmcut, {0}, &h);
@@ -130,8 +130,8 @@ TEST(LmCutHeuristic, GoalStateAndEmptyGoal) {
 
 // Large costs exercise the heap mode of the exploration queue.
 TEST(LmCutHeuristic, LargeCosts) {
-    auto task = make_task(4, {op({0}, {1}, 3000), op({0}, {2}, 4000), op({1, 2}, {3}, 50000)},
-                          {0}, {3});
+    auto task =
+        make_task(4, {op({0}, {1}, 3000), op({0}, {2}, 4000), op({1, 2}, {3}, 50000)}, {0}, {3});
     LmCutHeuristic h(task);
     EXPECT_EQ(evaluate(h, task, {0}), 57000);
     EXPECT_EQ(evaluate(h, task, {0, 1}), 54000);
@@ -218,8 +218,8 @@ TEST(LmCutHeuristic, BoundedByHMaxAndHPlusOnRandomTasks) {
             strictly_above_hmax += h > hm;
         }
     }
-    EXPECT_GT(strictly_above_hmax, 20);  // the test would not notice LM-cut == h^max
+    EXPECT_GT(strictly_above_hmax, 20); // the test would not notice LM-cut == h^max
 }
 
-}  // namespace
-}  // namespace envdesign::heuristics
+} // namespace
+} // namespace envdesign::heuristics

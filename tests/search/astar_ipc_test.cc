@@ -57,5 +57,5 @@ INSTANTIATE_TEST_SUITE_P(
                       Reference{"elevators-opt08-strips", "p02.pddl", 26, 56}),
     instance_name);
 
-}  // namespace
-}  // namespace envdesign::search
+} // namespace
+} // namespace envdesign::search

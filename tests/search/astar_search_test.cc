@@ -23,7 +23,8 @@ long long plan_cost(const ground::GroundTask &task, const std::vector<ground::Op
 }
 
 // Replays the plan with STRIPS semantics and checks that it reaches the goal.
-bool plan_reaches_goal(const ground::GroundTask &task, const std::vector<ground::OperatorId> &plan) {
+bool plan_reaches_goal(const ground::GroundTask &task,
+                       const std::vector<ground::OperatorId> &plan) {
     std::set<ground::FactId> state(task.initial_state.begin(), task.initial_state.end());
     for (ground::OperatorId op : plan) {
         const ground::GroundOperator &o = task.operators[op];
@@ -86,15 +87,15 @@ TEST_P(AStarAllHeuristics, InitialStateIsGoal) {
     ASSERT_EQ(result.status, SearchStatus::SOLVED);
     EXPECT_EQ(result.cost, 0);
     EXPECT_TRUE(result.plan.empty());
-    EXPECT_EQ(result.stats.expanded, 1);  // the goal counts as expanded, as in FD
+    EXPECT_EQ(result.stats.expanded, 1); // the goal counts as expanded, as in FD
 }
 
 TEST_P(AStarAllHeuristics, SecondaryCostBreaksTies) {
     // Two plans of primary cost 4; the second is cheaper in secondary cost (1 vs 5). A third
     // plan has secondary cost 0 but primary cost 5.
     ground::GroundTask task = graph_task(
-        5, {{0, 1, 2, 5}, {1, 4, 2, 0}, {0, 2, 2, 0}, {2, 4, 2, 1}, {0, 3, 1, 0}, {3, 4, 4, 0}},
-        0, 4);
+        5, {{0, 1, 2, 5}, {1, 4, 2, 0}, {0, 2, 2, 0}, {2, 4, 2, 1}, {0, 3, 1, 0}, {3, 4, 4, 0}}, 0,
+        4);
     SearchResult result = astar(task, GetParam());
     ASSERT_EQ(result.status, SearchStatus::SOLVED);
     EXPECT_EQ(result.cost, 4);
@@ -120,8 +121,8 @@ TEST(AStarSearch, DeadEndsArePruned) {
     SearchResult result = astar(task, HeuristicKind::LMCUT);
     ASSERT_EQ(result.status, SearchStatus::SOLVED);
     EXPECT_EQ(result.cost, 5);
-    EXPECT_EQ(result.stats.dead_ends, 1);   // state 1 (LM-cut sees it is a dead end)
-    EXPECT_EQ(result.stats.expanded, 2);    // 0 and the goal
+    EXPECT_EQ(result.stats.dead_ends, 1); // state 1 (LM-cut sees it is a dead end)
+    EXPECT_EQ(result.stats.expanded, 2);  // 0 and the goal
     EXPECT_EQ(result.stats.evaluated, 3);
     EXPECT_EQ(result.stats.generated, 2);
 }
@@ -149,7 +150,7 @@ TEST(AStarSearch, ReopensClosedStatesForInconsistentHeuristics) {
     EXPECT_EQ(result.cost, 7);
     EXPECT_EQ(result.plan, (std::vector<ground::OperatorId>{0, 1, 3}));
     EXPECT_EQ(result.stats.reopened, 1);
-    EXPECT_EQ(result.stats.expanded, 5);  // s, c, a, c again, g
+    EXPECT_EQ(result.stats.expanded, 5); // s, c, a, c again, g
 }
 
 // Each step expands one state; the initial evaluation is a step of its own.
@@ -157,14 +158,14 @@ TEST(AStarSearch, StepwiseCounts) {
     ground::GroundTask task = graph_task(3, {{0, 1, 1}, {1, 2, 1}}, 0, 2);
     auto h = heuristics::make_heuristic(HeuristicKind::BLIND, task);
     AStarSearch search(task, *h);
-    EXPECT_EQ(search.step(), SearchStatus::IN_PROGRESS);  // evaluates the initial state
+    EXPECT_EQ(search.step(), SearchStatus::IN_PROGRESS); // evaluates the initial state
     EXPECT_EQ(search.result().stats.expanded, 0);
     EXPECT_EQ(search.step(), SearchStatus::IN_PROGRESS);
     EXPECT_EQ(search.result().stats.expanded, 1);
     EXPECT_EQ(search.step(), SearchStatus::IN_PROGRESS);
     EXPECT_EQ(search.step(), SearchStatus::SOLVED);
     EXPECT_EQ(search.result().stats.expanded, 3);
-    EXPECT_EQ(search.step(), SearchStatus::SOLVED);  // stays finished
+    EXPECT_EQ(search.step(), SearchStatus::SOLVED); // stays finished
 }
 
 // 22 independent switches: 4 million states, far more than blind search can do in 0.2 s.
@@ -172,7 +173,7 @@ ground::GroundTask switches_task(int n) {
     ground::GroundTask task = testing::make_task(n + 1);
     for (int i = 0; i < n; ++i)
         testing::add_op(task, "(on " + std::to_string(i) + ")", {}, {i}, {});
-    testing::add_op(task, "(never)", {0, n}, {n}, {});  // n is unreachable
+    testing::add_op(task, "(never)", {0, n}, {n}, {}); // n is unreachable
     task.goal = {n};
     return task;
 }
@@ -207,5 +208,5 @@ TEST(AStarSearch, ExhaustsStateSpace) {
     EXPECT_EQ(result.stats.registered_states, 1024);
 }
 
-}  // namespace
-}  // namespace envdesign::search
+} // namespace
+} // namespace envdesign::search

@@ -21,7 +21,7 @@ TEST(IntPacker, BitWidths) {
 }
 
 TEST(IntPacker, SmallVariablesShareOneBin) {
-    EXPECT_EQ(IntPacker({3, 2, 5}).num_bins(), 1);         // 2 + 1 + 3 bits
+    EXPECT_EQ(IntPacker({3, 2, 5}).num_bins(), 1); // 2 + 1 + 3 bits
     EXPECT_EQ(IntPacker(std::vector<int>(32, 2)).num_bins(), 1);
     EXPECT_EQ(IntPacker(std::vector<int>(33, 2)).num_bins(), 2);
     EXPECT_EQ(IntPacker({}).num_bins(), 0);
@@ -43,7 +43,8 @@ TEST(IntPacker, RandomRoundTrip) {
         std::vector<int> ranges(num_vars(rng));
         for (int &r : ranges) {
             int bits = log_range(rng);
-            r = bits == 31 ? 0x7fffffff : (1 << bits) + std::uniform_int_distribution<int>(0, 2)(rng);
+            r = bits == 31 ? 0x7fffffff
+                           : (1 << bits) + std::uniform_int_distribution<int>(0, 2)(rng);
         }
         IntPacker packer(ranges);
         std::vector<IntPacker::Bin> bins(packer.num_bins(), 0xdeadbeef);
@@ -59,9 +60,7 @@ TEST(IntPacker, RandomRoundTrip) {
     }
 }
 
-TEST(IntPacker, InvalidRangesThrow) {
-    EXPECT_THROW(IntPacker({0}), std::invalid_argument);
-}
+TEST(IntPacker, InvalidRangesThrow) { EXPECT_THROW(IntPacker({0}), std::invalid_argument); }
 
-}  // namespace
-}  // namespace envdesign::search
+} // namespace
+} // namespace envdesign::search

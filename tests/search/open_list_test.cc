@@ -23,7 +23,7 @@ TEST(BucketOpenList, OrdersByFThenHThenFifo) {
     open.push(4, {5, 0, 1});
     open.push(5, {5, 0, 3});
     EXPECT_EQ(open.pop(), 3U);
-    open.push(6, {3, 0, 0});  // f below the last popped one (inconsistent heuristic)
+    open.push(6, {3, 0, 0}); // f below the last popped one (inconsistent heuristic)
     EXPECT_EQ(drain(open), (std::vector<StateID>{6, 2, 4, 1, 5}));
 }
 
@@ -60,5 +60,5 @@ TEST(OpenLists, AgreeWithStableSort) {
     EXPECT_EQ(drain(heap), expected);
 }
 
-}  // namespace
-}  // namespace envdesign::search
+} // namespace
+} // namespace envdesign::search

@@ -68,4 +68,4 @@ inline ground::GroundTask grid_task(int n, std::vector<int> blocked = {}) {
     return task;
 }
 
-}  // namespace envdesign::search::testing
+} // namespace envdesign::search::testing

@@ -55,8 +55,8 @@ TEST(StateCodec, PackUnpackRoundTrip) {
 TEST(StateCodec, ApplyDeletesBeforeAddsAndSparesTrueGroupMates) {
     ground::GroundTask task = packed_task();
     testing::add_op(task, "(move)", {1}, {2}, {1});        // within a group
-    testing::add_op(task, "(del-false)", {}, {}, {3, 12});  // 3 is false while 1 is true
-    testing::add_op(task, "(del-add)", {}, {4, 12}, {1});    // group: add wins the variable
+    testing::add_op(task, "(del-false)", {}, {}, {3, 12}); // 3 is false while 1 is true
+    testing::add_op(task, "(del-add)", {}, {4, 12}, {1});  // group: add wins the variable
     StateCodec codec(task);
     std::vector<StateCodec::Bin> s(codec.num_bins()), t(codec.num_bins());
     UnpackedState out(codec);
@@ -115,7 +115,7 @@ TEST(StateRegistry, DeduplicatesAndKeepsIdsDense) {
     std::mt19937 rng(5);
     std::map<std::vector<ground::FactId>, StateID> seen;
     UnpackedState out(registry.codec());
-    for (int i = 0; i < 20000; ++i) {  // enough to grow the hash table several times
+    for (int i = 0; i < 20000; ++i) { // enough to grow the hash table several times
         std::vector<ground::FactId> facts = random_state(task, rng);
         InsertResult r = registry.insert_facts(facts);
         auto it = seen.find(facts);
@@ -139,14 +139,14 @@ TEST(StateRegistry, SuccessorsAreRegisteredOnce) {
     ground::GroundTask task = testing::grid_task(3);
     StateRegistry registry(task);
     StateID init = registry.insert_facts(task.initial_state).id;
-    InsertResult right = registry.insert_successor(init, 0);  // (move v0 v1)
+    InsertResult right = registry.insert_successor(init, 0); // (move v0 v1)
     EXPECT_TRUE(right.is_new);
     EXPECT_EQ(right.id, 1U);
-    InsertResult back = registry.insert_successor(right.id, 1);  // (move v1 v0)
+    InsertResult back = registry.insert_successor(right.id, 1); // (move v1 v0)
     EXPECT_FALSE(back.is_new);
     EXPECT_EQ(back.id, init);
     EXPECT_EQ(registry.size(), 2U);
 }
 
-}  // namespace
-}  // namespace envdesign::search
+} // namespace
+} // namespace envdesign::search

@@ -40,7 +40,7 @@ TEST(SuccessorGenerator, MatchesBruteForce) {
             codec.pack(facts, bins.data());
             codec.unpack(bins.data(), state);
             generator.applicable_operators(state, applicable);
-            std::sort(applicable.begin(), applicable.end());  // FD's order, compared as a set
+            std::sort(applicable.begin(), applicable.end()); // FD's order, compared as a set
             std::vector<ground::OperatorId> expected;
             for (int o = 0; o < task.num_operators(); ++o) {
                 const auto &pre = task.operators[o].pre;
@@ -58,11 +58,11 @@ TEST(SuccessorGenerator, MatchesBruteForce) {
 TEST(SuccessorGenerator, FastDownwardOrder) {
     ground::GroundTask task;
     task.fact_names = {"(c)", "(a)", "(b)"};
-    testing::add_op(task, "(o1)", {0}, {}, {});       // pre (c)
-    testing::add_op(task, "(o2)", {1, 2}, {}, {});    // pre (b) (a)
-    testing::add_op(task, "(o3)", {}, {}, {});        // no precondition: first
-    testing::add_op(task, "(o4)", {1}, {}, {});       // pre (a): after (b) (a)
-    testing::add_op(task, "(o0)", {0}, {}, {});       // same as o1, smaller name
+    testing::add_op(task, "(o1)", {0}, {}, {});    // pre (c)
+    testing::add_op(task, "(o2)", {1, 2}, {}, {}); // pre (b) (a)
+    testing::add_op(task, "(o3)", {}, {}, {});     // no precondition: first
+    testing::add_op(task, "(o4)", {1}, {}, {});    // pre (a): after (b) (a)
+    testing::add_op(task, "(o0)", {0}, {}, {});    // same as o1, smaller name
     SuccessorGenerator generator(task);
     StateCodec codec(task);
     UnpackedState state(codec);
@@ -74,5 +74,5 @@ TEST(SuccessorGenerator, FastDownwardOrder) {
     EXPECT_EQ(applicable, (std::vector<ground::OperatorId>{2, 4, 0, 1, 3}));
 }
 
-}  // namespace
-}  // namespace envdesign::search
+} // namespace
+} // namespace envdesign::search
