@@ -38,7 +38,7 @@ SearchStatus AStarSearch::step() {
         return result_.status;
     if (!initialized_)
         return initialize();
-    if (result_.stats.expanded % CHECK_INTERVAL == 0 && limit_reached())
+    if (limit_reached())
         return finish(SearchStatus::LIMIT);
     while (!open_list_->empty()) {
         StateID id = open_list_->pop();
@@ -96,7 +96,8 @@ bool AStarSearch::limit_reached() const {
         if (elapsed >= limits_.time_limit_s)
             return true;
     }
-    return limits_.memory_limit_bytes > 0 && memory_bytes() >= limits_.memory_limit_bytes;
+    return limits_.memory_limit_bytes > 0 && result_.stats.expanded % MEMORY_CHECK_INTERVAL == 0 &&
+           memory_bytes() >= limits_.memory_limit_bytes;
 }
 
 bool AStarSearch::is_goal(const UnpackedState &state) const {
