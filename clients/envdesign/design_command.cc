@@ -20,9 +20,9 @@ std::string number(double value) { return design::json_number(value).dump(); }
 
 void print_terms(const std::string &label, const design::EvaluatedDesign &d) {
     const auto &t = d.objective.terms;
-    std::cout << label << number(d.objective.value) << " (inexplicability " << number(t.inexplicability)
-              << ", design cost " << number(t.design_cost) << ", robot cost "
-              << number(t.robot_cost) << ")\n";
+    std::cout << label << number(d.objective.value) << " (inexplicability "
+              << number(t.inexplicability) << ", design cost " << number(t.design_cost)
+              << ", robot cost " << number(t.robot_cost) << ")\n";
 }
 
 void print_text(const design::DesignProblem &problem, const design::DesignResult &result) {
@@ -31,7 +31,8 @@ void print_text(const design::DesignProblem &problem, const design::DesignResult
         std::cout << "no configuration was evaluated in time\n";
         return;
     }
-    std::cout << "design: " << design::to_string(problem, result.best->ranked.configuration) << "\n";
+    std::cout << "design: " << design::to_string(problem, result.best->ranked.configuration)
+              << "\n";
     print_terms("objective: ", *result.best);
     if (result.baseline)
         print_terms("baseline: ", *result.baseline);
@@ -48,24 +49,26 @@ void print_text(const design::DesignProblem &problem, const design::DesignResult
 design::DesignSearchOptions search_options(const DesignFlags &flags,
                                            const design::DesignProblem &problem) {
     design::DesignSearchOptions options;
-    options.max_design_size = flags.max_design_size >= 0 ? flags.max_design_size
-                                                         : problem.max_design_size;
+    options.max_design_size =
+        flags.max_design_size >= 0 ? flags.max_design_size : problem.max_design_size;
     double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem.time_limit_s;
     options.deadline = design::Deadline::in(seconds);
     options.batch_size = 4 * std::max(1, flags.workers);
     return options;
 }
 
-}  // namespace
+} // namespace
 
 void add_design_flags(CLI::App &command, DesignFlags &flags) {
     command.add_option("spec", flags.spec, "design problem file (.textproto or .json)")->required();
     command.add_flag("--json", flags.json, "print a JSON result");
     command.add_option("--workers", flags.workers, "planner threads")->check(CLI::Range(1, 256));
-    command.add_option("--time-limit", flags.time_limit_s, "seconds (0: none; default: the spec's)")
+    command
+        .add_option("--time-limit", flags.time_limit_s, "seconds (0: none; default: the spec's)")
         ->check(CLI::NonNegativeNumber);
-    command.add_option("--max-design-size", flags.max_design_size,
-                       "most modifications in a design (0: no limit; default: the spec's)")
+    command
+        .add_option("--max-design-size", flags.max_design_size,
+                    "most modifications in a design (0: no limit; default: the spec's)")
         ->check(CLI::NonNegativeNumber);
     command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
         ->check(CLI::IsMember({"none", "relevant"}));
@@ -94,7 +97,8 @@ int run_design(const DesignFlags &flags) {
     design::LocalEvaluator evaluator(problem, flags.workers, planner);
     if (flags.prune == "relevant")
         options.relevant = [&](const design::Configuration &c) {
-            return design::relevant_modifications(problem, c, evaluator.planner(), options.deadline);
+            return design::relevant_modifications(problem, c, evaluator.planner(),
+                                                  options.deadline);
         };
     design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     design::DesignResult result = design::search_design(
@@ -109,4 +113,4 @@ int run_design(const DesignFlags &flags) {
     return result.limit_reached ? 4 : 0;
 }
 
-}  // namespace envdesign::cli
+} // namespace envdesign::cli

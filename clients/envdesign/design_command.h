@@ -11,11 +11,11 @@ struct DesignFlags {
     std::string spec;
     bool json = false;
     int workers = 1;
-    double time_limit_s = -1;   // < 0: the spec's time_limit_s
-    int max_design_size = -1;   // < 0: the spec's max_design_size
+    double time_limit_s = -1; // < 0: the spec's time_limit_s
+    int max_design_size = -1; // < 0: the spec's max_design_size
     std::string prune = "none";
     std::string heuristic = "lmcut";
-    std::string connect;        // LCM URL of a running coordinator (issue 5)
+    std::string connect; // LCM URL of a running coordinator (issue 5)
 };
 
 void add_design_flags(CLI::App &command, DesignFlags &flags);
@@ -24,4 +24,4 @@ void add_design_flags(CLI::App &command, DesignFlags &flags);
 // usage, 4 the time limit stopped the search (the best design found is still printed).
 int run_design(const DesignFlags &flags);
 
-}  // namespace envdesign::cli
+} // namespace envdesign::cli

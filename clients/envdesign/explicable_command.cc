@@ -20,9 +20,7 @@ design::ModelPair load_models(const ExplicableFlags &flags) {
     return models;
 }
 
-std::string number(std::optional<double> value) {
-    return design::json_number(value).dump();
-}
+std::string number(std::optional<double> value) { return design::json_number(value).dump(); }
 
 void print_text(const design::TaskExplicability &r) {
     for (const auto &step : r.plan)
@@ -32,7 +30,7 @@ void print_text(const design::TaskExplicability &r) {
               << ", human optimal cost = " << number(r.human_optimal_cost) << "\n";
 }
 
-}  // namespace
+} // namespace
 
 void add_explicable_flags(CLI::App &command, ExplicableFlags &flags) {
     command.add_option("--robot-domain", flags.robot_domain, "PDDL domain of the robot's model")
@@ -81,4 +79,4 @@ int run_explicable(const ExplicableFlags &flags) {
     }
 }
 
-}  // namespace envdesign::cli
+} // namespace envdesign::cli

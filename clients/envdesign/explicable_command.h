@@ -9,9 +9,9 @@ namespace envdesign::cli {
 
 struct ExplicableFlags {
     std::string robot_domain;
-    std::string human_domain;   // empty: the robot's domain
+    std::string human_domain; // empty: the robot's domain
     std::string problem;
-    std::string human_problem;  // empty: `problem`
+    std::string human_problem; // empty: `problem`
     std::string distance = "EXP_COST_DIFF";
     std::string heuristic = "lmcut";
     double time_limit_s = 0;
@@ -24,4 +24,4 @@ void add_explicable_flags(CLI::App &command, ExplicableFlags &flags);
 // 4 time limit.
 int run_explicable(const ExplicableFlags &flags);
 
-}  // namespace envdesign::cli
+} // namespace envdesign::cli

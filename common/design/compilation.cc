@@ -6,7 +6,7 @@ namespace envdesign::design {
 namespace {
 
 using pddl::ParseError;
-using Renaming = std::map<std::string, std::string>;  // variable -> variable
+using Renaming = std::map<std::string, std::string>; // variable -> variable
 
 pddl::Atom renamed(const pddl::Atom &atom, const std::string &prefix, const Renaming &vars) {
     pddl::Atom out = atom;
@@ -78,10 +78,11 @@ void add_signatures(const std::vector<pddl::Predicate> &from, const std::string 
 
 Renaming parameter_renaming(const pddl::Action &robot, const pddl::Action &human) {
     if (robot.parameters.size() != human.parameters.size())
-        throw ParseError(human.location,
-                         "action '" + human.name + "' has " + std::to_string(human.parameters.size()) +
-                             " parameter(s) in the human's model but " +
-                             std::to_string(robot.parameters.size()) + " in the robot's");
+        throw ParseError(human.location, "action '" + human.name + "' has " +
+                                             std::to_string(human.parameters.size()) +
+                                             " parameter(s) in the human's model but " +
+                                             std::to_string(robot.parameters.size()) +
+                                             " in the robot's");
     Renaming vars;
     for (std::size_t i = 0; i < robot.parameters.size(); ++i) {
         if (robot.parameters[i].types != human.parameters[i].types)
@@ -164,7 +165,7 @@ pddl::Problem compile_problem(const ModelPair &models, const pddl::Domain &domai
     return out;
 }
 
-}  // namespace
+} // namespace
 
 std::string robot_copy(const std::string &name) { return "r-" + name; }
 std::string human_copy(const std::string &name) { return "h-" + name; }
@@ -176,4 +177,4 @@ CompiledTask compile_explicable(const ModelPair &models) {
     return out;
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

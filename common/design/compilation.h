@@ -31,4 +31,4 @@ CompiledTask compile_explicable(const ModelPair &models);
 std::string robot_copy(const std::string &name);
 std::string human_copy(const std::string &name);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -46,4 +46,4 @@ std::string to_string(const DesignProblem &problem, const Configuration &configu
     return out + "}";
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -41,4 +41,4 @@ std::vector<std::string> design_names(const DesignProblem &problem,
 // "{barrier-a, barrier-b}" for logs.
 std::string to_string(const DesignProblem &problem, const Configuration &configuration);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -28,7 +28,8 @@ public:
     double remaining_seconds() const {
         if (!at_)
             return 0;
-        double left = std::chrono::duration<double>(*at_ - std::chrono::steady_clock::now()).count();
+        double left =
+            std::chrono::duration<double>(*at_ - std::chrono::steady_clock::now()).count();
         return std::max(left, 0.001);
     }
 
@@ -36,4 +37,4 @@ private:
     std::optional<std::chrono::steady_clock::time_point> at_;
 };
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

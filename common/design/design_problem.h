@@ -20,36 +20,36 @@ namespace envdesign::design {
 enum class Distance { EXP_COST_DIFF, COST_DIFF };
 
 struct ObjectiveWeights {
-    double alpha = 1;  // weight of f_T(E[IE])
-    double beta = 1;   // weight of the design cost C(xi)
-    double kappa = 1;  // weight of T * E[c_R(pi)]
-    double gamma = 1;  // discount of inexplicability over the horizon, in [0, 1]
-    int horizon = 1;   // T
+    double alpha = 1; // weight of f_T(E[IE])
+    double beta = 1;  // weight of the design cost C(xi)
+    double kappa = 1; // weight of T * E[c_R(pi)]
+    double gamma = 1; // discount of inexplicability over the horizon, in [0, 1]
+    int horizon = 1;  // T
     Distance distance = Distance::EXP_COST_DIFF;
 };
 
 struct DesignTask {
     std::string name;
-    double probability = 1;  // normalised: the tasks' probabilities sum to 1
+    double probability = 1; // normalised: the tasks' probabilities sum to 1
     pddl::Problem robot_problem;
-    pddl::Problem human_problem;  // a copy of robot_problem when the spec gives none
+    pddl::Problem human_problem; // a copy of robot_problem when the spec gives none
 };
 
 struct Modification {
     std::string name;
     double cost = 0;
-    std::vector<Edit> edits;  // applied in order
+    std::vector<Edit> edits; // applied in order
 };
 
 struct DesignProblem {
-    std::string file;  // the spec file, for messages
+    std::string file; // the spec file, for messages
     pddl::Domain robot_domain;
-    pddl::Domain human_domain;  // a copy of robot_domain when the spec gives none
+    pddl::Domain human_domain; // a copy of robot_domain when the spec gives none
     std::vector<DesignTask> tasks;
     std::vector<Modification> modifications;
     ObjectiveWeights weights;
-    int max_design_size = 0;  // 0: no limit
-    double time_limit_s = 0;  // 0: no limit
+    int max_design_size = 0; // 0: no limit
+    double time_limit_s = 0; // 0: no limit
 };
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

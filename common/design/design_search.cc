@@ -37,7 +37,7 @@ public:
         for (const auto &m : problem.modifications)
             costs.push_back(m.cost);
         std::sort(costs.begin(), costs.end());
-        cheapest_.push_back(0);  // cheapest_[k]: the least C over k-subsets
+        cheapest_.push_back(0); // cheapest_[k]: the least C over k-subsets
         for (double c : costs)
             cheapest_.push_back(cheapest_.back() + c);
         costs_non_negative_ = costs.empty() || costs.front() >= 0;
@@ -228,7 +228,7 @@ private:
     bool limit_seen_ = false;
 };
 
-}  // namespace
+} // namespace
 
 long long binomial(long long n, long long k) {
     if (k < 0 || k > n)
@@ -247,4 +247,4 @@ DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
     return Search(problem, evaluator, options, progress).run();
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -34,28 +34,28 @@
 namespace envdesign::design {
 
 struct DesignSearchOptions {
-    int max_design_size = 0;  // 0: no limit
+    int max_design_size = 0; // 0: no limit
     Deadline deadline;
     // --prune relevant: the modifications worth adding to a configuration (relevance.h);
     // empty: every subset is a candidate (exact).
     std::function<std::vector<int>(const Configuration &)> relevant;
-    int batch_size = 8;  // configurations per evaluate() call
+    int batch_size = 8; // configurations per evaluate() call
 };
 
 struct SearchProgress {
-    long long done = 0;   // configurations evaluated, abandoned or skipped
-    long long total = 0;  // configurations in the search space (with --prune: generated so far)
+    long long done = 0;  // configurations evaluated, abandoned or skipped
+    long long total = 0; // configurations in the search space (with --prune: generated so far)
     double best_objective = INF;
     long long planner_runs = 0;
     long long cache_hits = 0;
 };
 
 struct DesignCounters {
-    long long configurations_total = 0;      // subsets of the modifications up to the size limit
-    long long configurations_evaluated = 0;  // fully evaluated
-    long long configurations_abandoned = 0;  // dropped part-way by the bound
-    long long configurations_skipped = 0;    // never started: the bound excluded them
-    long long configurations_pruned = 0;     // never generated: --prune relevant left them out
+    long long configurations_total = 0;     // subsets of the modifications up to the size limit
+    long long configurations_evaluated = 0; // fully evaluated
+    long long configurations_abandoned = 0; // dropped part-way by the bound
+    long long configurations_skipped = 0;   // never started: the bound excluded them
+    long long configurations_pruned = 0;    // never generated: --prune relevant left them out
     EvaluatorCounters evaluator;
     double seconds = 0;
 };
@@ -67,10 +67,10 @@ struct EvaluatedDesign {
 };
 
 struct DesignResult {
-    bool optimal = false;        // proven optimal for the spec
-    bool limit_reached = false;  // the deadline stopped the search
-    std::optional<EvaluatedDesign> best;      // unset only if not even {} was evaluated
-    std::optional<EvaluatedDesign> baseline;  // the empty design
+    bool optimal = false;                    // proven optimal for the spec
+    bool limit_reached = false;              // the deadline stopped the search
+    std::optional<EvaluatedDesign> best;     // unset only if not even {} was evaluated
+    std::optional<EvaluatedDesign> baseline; // the empty design
     DesignCounters counters;
 };
 
@@ -81,4 +81,4 @@ DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
 // C(n, k), saturating at the largest long long.
 long long binomial(long long n, long long k);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -46,8 +46,7 @@ private:
     }
 
     // A PDDL error names the PDDL file; the note says which line of the spec led there.
-    template <typename Load>
-    auto load_pddl(const std::string &field, Load load) const {
+    template <typename Load> auto load_pddl(const std::string &field, Load load) const {
         try {
             return load();
         } catch (const ParseError &e) {
@@ -58,13 +57,15 @@ private:
 
     void load_domains() {
         std::string robot = resolve("robot_domain", m_.robot_domain());
-        problem_.robot_domain = load_pddl("robot_domain", [&] { return pddl::parse_domain_file(robot); });
+        problem_.robot_domain =
+            load_pddl("robot_domain", [&] { return pddl::parse_domain_file(robot); });
         if (m_.human_domain().empty()) {
             problem_.human_domain = problem_.robot_domain;
             return;
         }
         std::string human = resolve("human_domain", m_.human_domain());
-        problem_.human_domain = load_pddl("human_domain", [&] { return pddl::parse_domain_file(human); });
+        problem_.human_domain =
+            load_pddl("human_domain", [&] { return pddl::parse_domain_file(human); });
     }
 
     void load_tasks() {
@@ -83,14 +84,15 @@ private:
             task.name = t.name();
             task.probability = t.has_probability() ? t.probability() : 1.0;
             if (!(task.probability >= 0) || !std::isfinite(task.probability))
-                fail(at + ".probability", "the probability of task '" + t.name() +
-                                              "' must be a non-negative number");
+                fail(at + ".probability",
+                     "the probability of task '" + t.name() + "' must be a non-negative number");
             total += task.probability;
             std::string file = resolve(at + ".problem", t.problem());
             task.robot_problem = load_pddl(at + ".problem", [&] {
                 return pddl::parse_problem_file(file, problem_.robot_domain);
             });
-            std::string human_field = at + (t.human_problem().empty() ? ".problem" : ".human_problem");
+            std::string human_field =
+                at + (t.human_problem().empty() ? ".problem" : ".human_problem");
             std::string human_file =
                 t.human_problem().empty() ? file : resolve(human_field, t.human_problem());
             task.human_problem = load_pddl(human_field, [&] {
@@ -122,7 +124,7 @@ private:
         if (w.horizon < 1)
             fail("horizon", "horizon must be at least 1");
         w.distance = m_.distance() == proto::DesignProblem::COST_DIFF ? Distance::COST_DIFF
-                                                                       : Distance::EXP_COST_DIFF;
+                                                                      : Distance::EXP_COST_DIFF;
         if (m_.max_design_size() < 0)
             fail("max_design_size", "max_design_size must be >= 0");
         problem_.max_design_size = m_.max_design_size();
@@ -155,7 +157,7 @@ private:
     DesignProblem problem_;
 };
 
-}  // namespace
+} // namespace
 
 DesignProblem load_design_problem(const SpecFile &spec) { return Loader(spec).load(); }
 
@@ -163,4 +165,4 @@ DesignProblem load_design_problem(const std::string &spec_path) {
     return load_design_problem(read_spec_file(spec_path));
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

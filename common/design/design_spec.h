@@ -24,4 +24,4 @@ DesignProblem load_design_problem(const std::string &spec_path);
 // against the directory of spec.path.
 DesignProblem load_design_problem(const SpecFile &spec);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

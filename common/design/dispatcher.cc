@@ -4,8 +4,7 @@ namespace envdesign::design {
 
 Dispatcher::Dispatcher(const std::vector<Configuration> &batch, int tasks, bool robot_bounds,
                        const EvaluationCallbacks &callbacks)
-    : callbacks_(callbacks), tasks_(tasks), robot_bounds_(robot_bounds),
-      progress_(batch.size()) {
+    : callbacks_(callbacks), tasks_(tasks), robot_bounds_(robot_bounds), progress_(batch.size()) {
     for (const auto &c : batch)
         state_.push_back({c, EvaluationStatus::LIMIT,
                           std::vector<std::optional<TaskExplicability>>(tasks),
@@ -21,7 +20,7 @@ std::optional<Job> Dispatcher::next_job() {
             return job;
         const Progress &p = progress_[c];
         if (c == first_open_ && (p.stopped || p.tasks_sent == tasks_))
-            ++first_open_;  // nothing more to send for it
+            ++first_open_; // nothing more to send for it
     }
     return std::nullopt;
 }
@@ -35,7 +34,7 @@ std::optional<Job> Dispatcher::next_job_of(int c) {
         return Job{c, p.bounds_sent++, JobKind::ROBOT_BOUND};
     }
     if (p.bounds_known < tasks_ || p.tasks_sent == tasks_)
-        return std::nullopt;  // waiting for answers
+        return std::nullopt; // waiting for answers
     if (abandon(c)) {
         stop(c, EvaluationStatus::CUT_OFF);
         finish_if_idle(c);
@@ -94,4 +93,4 @@ void Dispatcher::finish_if_idle(int c) {
     callbacks_.done(std::move(state_[c]));
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -20,15 +20,15 @@ namespace envdesign::design {
 enum class JobKind { ROBOT_BOUND, EXPLICABILITY };
 
 struct Job {
-    int configuration = 0;  // index into the batch
+    int configuration = 0; // index into the batch
     int task = 0;
     JobKind kind = JobKind::EXPLICABILITY;
 };
 
 struct JobAnswer {
     Job job;
-    std::optional<double> robot_bound;  // ROBOT_BOUND: c_R* (INF: no plan), unset: no bound
-    TaskExplicability explicability;    // EXPLICABILITY
+    std::optional<double> robot_bound; // ROBOT_BOUND: c_R* (INF: no plan), unset: no bound
+    TaskExplicability explicability;   // EXPLICABILITY
 };
 
 class Dispatcher {
@@ -65,7 +65,7 @@ private:
     bool robot_bounds_;
     std::vector<ConfigurationEvaluation> state_;
     std::vector<Progress> progress_;
-    int first_open_ = 0;  // configurations before this one need nothing more
+    int first_open_ = 0; // configurations before this one need nothing more
 };
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -29,14 +29,14 @@ bool contains(const std::vector<Literal> &list, const Literal &l) {
 }
 
 // Removes `l` from `list`; in STRICT mode its absence is an error.
-void remove_literal(std::vector<Literal> &list, const Literal &l, const Edit &edit,
-                    ApplyMode mode, const std::string &where) {
+void remove_literal(std::vector<Literal> &list, const Literal &l, const Edit &edit, ApplyMode mode,
+                    const std::string &where) {
     auto it = std::find_if(list.begin(), list.end(), [&](const Literal &x) { return same(x, l); });
     if (it != list.end())
         list.erase(it);
     else if (mode == ApplyMode::STRICT)
-        throw NotPresentError(edit.location, l.to_string() + " is not in " + where + " " +
-                                                 context_of(edit));
+        throw NotPresentError(edit.location,
+                              l.to_string() + " is not in " + where + " " + context_of(edit));
 }
 
 pddl::NameScope ground_scope(const pddl::Domain &domain, const pddl::Problem &problem,
@@ -56,8 +56,8 @@ pddl::Action *find_action(pddl::Domain &domain, const Edit &edit, ApplyMode mode
 
 pddl::Problem &need_problem(pddl::Problem *problem, const Edit &edit) {
     if (!problem)
-        throw ParseError(edit.location, "internal: " + edit_kind_name(edit.kind) +
-                                            " needs a problem");
+        throw ParseError(edit.location,
+                         "internal: " + edit_kind_name(edit.kind) + " needs a problem");
     return *problem;
 }
 
@@ -73,8 +73,7 @@ void apply_init(const Edit &edit, const pddl::Domain &domain, pddl::Problem &pro
     } else if (it != problem.init.end()) {
         problem.init.erase(it);
     } else if (mode == ApplyMode::STRICT) {
-        throw NotPresentError(edit.location, atom.to_string() +
-                                                 " is not in the initial state " +
+        throw NotPresentError(edit.location, atom.to_string() + " is not in the initial state " +
                                                  context_of(edit));
     }
 }
@@ -91,15 +90,15 @@ void apply_goal(const Edit &edit, const pddl::Domain &domain, pddl::Problem &pro
 void apply_add_predicate(const Edit &edit, pddl::Domain &domain, ApplyMode mode) {
     const SExpr &e = edit.expression;
     if (!e.is_list || e.items.empty() || e.items[0].is_list)
-        throw ParseError(edit.location, "expected a declaration '(name ?x - type ...)' " +
-                                            context_of(edit));
+        throw ParseError(edit.location,
+                         "expected a declaration '(name ?x - type ...)' " + context_of(edit));
     pddl::Predicate p{e.items[0].symbol,
                       pddl::parse_typed_list(e.items, 1, "placeholder", &domain.type_parent),
                       edit.location};
     if (const pddl::Predicate *old = domain.find_predicate(p.name)) {
         if (mode == ApplyMode::STRICT || old->parameters.size() != p.parameters.size())
-            throw ParseError(edit.location, "predicate '" + p.name + "' is already declared " +
-                                                context_of(edit));
+            throw ParseError(edit.location,
+                             "predicate '" + p.name + "' is already declared " + context_of(edit));
         return;
     }
     domain.predicates.push_back(std::move(p));
@@ -115,7 +114,7 @@ Literal schema_literal(const Edit &edit, const pddl::Domain &domain, const pddl:
 void apply_schema_literal(const Edit &edit, pddl::Domain &domain, ApplyMode mode) {
     pddl::Action *action = find_action(domain, edit, mode);
     if (!action)
-        return;  // removed by another modification of this configuration
+        return; // removed by another modification of this configuration
     Literal literal = schema_literal(edit, domain, *action);
     bool precondition =
         edit.kind == EditKind::ADD_PRECONDITION || edit.kind == EditKind::REMOVE_PRECONDITION;
@@ -178,13 +177,14 @@ void apply_remove_action(const Edit &edit, pddl::Domain &domain, pddl::Problem *
     Edit named = edit;
     named.action = edit.expression.symbol;
     if (find_action(domain, named, mode))
-        std::erase_if(domain.actions, [&](const pddl::Action &a) { return a.name == named.action; });
+        std::erase_if(domain.actions,
+                      [&](const pddl::Action &a) { return a.name == named.action; });
 }
 
-}  // namespace
+} // namespace
 
-Edit parse_edit_text(EditKind kind, Model model, const std::string &action,
-                     const std::string &text, const pddl::Location &where) {
+Edit parse_edit_text(EditKind kind, Model model, const std::string &action, const std::string &text,
+                     const pddl::Location &where) {
     Edit edit{kind, model, action, {}, where};
     std::string trimmed = text;
     std::erase_if(trimmed, [](char c) { return c == '\n' || c == '\r'; });
@@ -199,8 +199,8 @@ Edit parse_edit_text(EditKind kind, Model model, const std::string &action,
             edit.expression = pddl::read_sexpr(text, where.file);
         }
     } catch (const ParseError &e) {
-        throw ParseError(where, "in edit " + edit_kind_name(kind) + ": '" + text +
-                                    "': " + e.message());
+        throw ParseError(where,
+                         "in edit " + edit_kind_name(kind) + ": '" + text + "': " + e.message());
     }
     relocate(edit.expression, where);
     std::transform(edit.action.begin(), edit.action.end(), edit.action.begin(),
@@ -233,18 +233,28 @@ bool applies_to_human(Model model) { return model != Model::ROBOT; }
 
 std::string edit_kind_name(EditKind kind) {
     switch (kind) {
-    case EditKind::ADD_INIT: return "add_init";
-    case EditKind::REMOVE_INIT: return "remove_init";
-    case EditKind::ADD_GOAL: return "add_goal";
-    case EditKind::REMOVE_GOAL: return "remove_goal";
-    case EditKind::ADD_PREDICATE: return "add_predicate";
-    case EditKind::ADD_PRECONDITION: return "add_precondition";
-    case EditKind::REMOVE_PRECONDITION: return "remove_precondition";
-    case EditKind::ADD_EFFECT: return "add_effect";
-    case EditKind::REMOVE_EFFECT: return "remove_effect";
-    case EditKind::REMOVE_ACTION: return "remove_action";
+    case EditKind::ADD_INIT:
+        return "add_init";
+    case EditKind::REMOVE_INIT:
+        return "remove_init";
+    case EditKind::ADD_GOAL:
+        return "add_goal";
+    case EditKind::REMOVE_GOAL:
+        return "remove_goal";
+    case EditKind::ADD_PREDICATE:
+        return "add_predicate";
+    case EditKind::ADD_PRECONDITION:
+        return "add_precondition";
+    case EditKind::REMOVE_PRECONDITION:
+        return "remove_precondition";
+    case EditKind::ADD_EFFECT:
+        return "add_effect";
+    case EditKind::REMOVE_EFFECT:
+        return "remove_effect";
+    case EditKind::REMOVE_ACTION:
+        return "remove_action";
     }
     return "edit";
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -37,10 +37,10 @@ enum class EditKind {
 struct Edit {
     EditKind kind = EditKind::ADD_INIT;
     Model model = Model::BOTH;
-    std::string action;       // schema name, for the schema edits and REMOVE_ACTION
-    pddl::SExpr expression;   // the atom, literal, declaration or ground action; for
-                              // REMOVE_ACTION of a whole schema a symbol
-    pddl::Location location;  // where the edit is written (the spec file)
+    std::string action;      // schema name, for the schema edits and REMOVE_ACTION
+    pddl::SExpr expression;  // the atom, literal, declaration or ground action; for
+                             // REMOVE_ACTION of a whole schema a symbol
+    pddl::Location location; // where the edit is written (the spec file)
 };
 
 enum class ApplyMode { STRICT, LENIENT };
@@ -54,8 +54,8 @@ public:
 
 // Reads the edit's text; throws pddl::ParseError at `where` when it is not an
 // S-expression of the right shape. Names are checked only when the edit is applied.
-Edit parse_edit_text(EditKind kind, Model model, const std::string &action,
-                     const std::string &text, const pddl::Location &where);
+Edit parse_edit_text(EditKind kind, Model model, const std::string &action, const std::string &text,
+                     const pddl::Location &where);
 
 // Applies `edit` to one model. `problem` may be null for a domain-only check. Throws
 // pddl::ParseError (at the edit's location) for an unknown action, predicate, object or
@@ -67,4 +67,4 @@ bool applies_to_robot(Model model);
 bool applies_to_human(Model model);
 std::string edit_kind_name(EditKind kind);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -24,15 +24,16 @@
 namespace envdesign::design {
 
 enum class EvaluationStatus {
-    COMPLETE,  // every task evaluated
-    CUT_OFF,   // abandoned: proven not to win
-    LIMIT,     // the deadline passed before every task was evaluated
+    COMPLETE, // every task evaluated
+    CUT_OFF,  // abandoned: proven not to win
+    LIMIT,    // the deadline passed before every task was evaluated
 };
 
 struct ConfigurationEvaluation {
     Configuration configuration;
     EvaluationStatus status = EvaluationStatus::LIMIT;
-    std::vector<std::optional<TaskExplicability>> tasks;  // per task of the spec; unset: not evaluated
+    std::vector<std::optional<TaskExplicability>>
+        tasks; // per task of the spec; unset: not evaluated
     // Per task, a lower bound on c_R(pi) known before the task is evaluated: the optimal
     // cost of the robot's own model (the most explicable plan is one of its plans).
     std::vector<std::optional<double>> robot_cost_bounds;
@@ -44,10 +45,10 @@ struct EvaluationCallbacks {
 };
 
 struct EvaluatorCounters {
-    long long task_evaluations = 0;  // (configuration, task) pairs evaluated
+    long long task_evaluations = 0; // (configuration, task) pairs evaluated
     long long planner_runs = 0;
     long long cache_hits = 0;
-    long long groundings_skipped = 0;  // cache hits found before grounding
+    long long groundings_skipped = 0; // cache hits found before grounding
     double planner_seconds = 0;
 };
 
@@ -61,4 +62,4 @@ public:
     virtual EvaluatorCounters counters() const = 0;
 };
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -22,12 +22,12 @@ std::optional<double> human_optimum(const ModelPair &models, PlanCache &planner,
     return std::nullopt;
 }
 
-}  // namespace
+} // namespace
 
 PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
                         PlanCache &planner, const Deadline &deadline) {
-    return planner.solve_model(lifted_key(domain, problem),
-                               [&] { return ground::ground(domain, problem); }, deadline);
+    return planner.solve_model(
+        lifted_key(domain, problem), [&] { return ground::ground(domain, problem); }, deadline);
 }
 
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance) {
@@ -60,9 +60,9 @@ TaskExplicability evaluate_explicability(const ModelPair &models, Distance dista
     result.plan = std::move(explicable.plan);
     result.ie = inexplicability(result.human_plan_cost, *result.human_optimal_cost, distance);
     // P_H has no plan although P_mod has one only if the models contradict the compilation.
-    result.status = std::isinf(result.ie) ? ExplicabilityStatus::INEXPLICABLE
-                                          : ExplicabilityStatus::SOLVED;
+    result.status =
+        std::isinf(result.ie) ? ExplicabilityStatus::INEXPLICABLE : ExplicabilityStatus::SOLVED;
     return result;
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

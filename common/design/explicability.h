@@ -25,18 +25,18 @@ namespace envdesign::design {
 inline constexpr double INF = std::numeric_limits<double>::infinity();
 
 enum class ExplicabilityStatus {
-    SOLVED,        // a most explicable plan was found
-    INEXPLICABLE,  // P_mod (or P_H) has no plan: IE is infinite
-    LIMIT,         // the deadline passed first: nothing is known
+    SOLVED,       // a most explicable plan was found
+    INEXPLICABLE, // P_mod (or P_H) has no plan: IE is infinite
+    LIMIT,        // the deadline passed first: nothing is known
 };
 
 struct TaskExplicability {
     ExplicabilityStatus status = ExplicabilityStatus::LIMIT;
     double ie = INF;
-    double robot_cost = INF;        // c_R(pi)
-    double human_plan_cost = INF;   // c_H(pi)
-    std::optional<double> human_optimal_cost;  // c_H*; INF if P_H has no plan; unset if not solved
-    std::vector<std::string> plan;  // pi, "(move c00 c10)" ...
+    double robot_cost = INF;                  // c_R(pi)
+    double human_plan_cost = INF;             // c_H(pi)
+    std::optional<double> human_optimal_cost; // c_H*; INF if P_H has no plan; unset if not solved
+    std::vector<std::string> plan;            // pi, "(move c00 c10)" ...
 };
 
 // The planner's answer for one lifted model: skips grounding when the model was seen
@@ -54,4 +54,4 @@ TaskExplicability evaluate_explicability(const ModelPair &models, Distance dista
                                          PlanCache &planner, const Deadline &deadline,
                                          bool solve_human_anyway = false);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -45,7 +45,7 @@ private:
     std::uint64_t b_ = 0x243f6a8885a308d3ull;
 };
 
-}  // namespace
+} // namespace
 
 std::string TaskKey::hex() const {
     char buffer[33];
@@ -116,4 +116,4 @@ TaskKey key_of(const ground::GroundTask &task) {
     return h.key();
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

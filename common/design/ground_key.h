@@ -39,4 +39,4 @@ TaskKey key_of(const ground::GroundTask &task);
 // The same 128-bit hash of any text (lifted_key.h hashes a lifted model with it).
 TaskKey key_of_text(const std::string &text);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -27,7 +27,7 @@ private:
             ++line_;
             column_ = 1;
         } else if ((static_cast<unsigned char>(text_[pos_]) & 0xC0) != 0x80) {
-            ++column_;  // count UTF-8 characters, not bytes
+            ++column_; // count UTF-8 characters, not bytes
         }
         ++pos_;
     }
@@ -51,7 +51,7 @@ private:
 
     std::string string() {
         std::string s;
-        advance();  // '"'
+        advance(); // '"'
         while (!at_end() && peek() != '"') {
             if (peek() == '\\')
                 advance();
@@ -64,7 +64,7 @@ private:
     }
 
     void object(const std::string &path) {
-        advance();  // '{'
+        advance(); // '{'
         for (skip_space(); !at_end() && peek() != '}'; skip_space()) {
             if (peek() == ',') {
                 advance();
@@ -85,7 +85,7 @@ private:
     }
 
     void array(const std::string &path) {
-        advance();  // '['
+        advance(); // '['
         int index = 0;
         for (skip_space(); !at_end() && peek() != ']'; skip_space()) {
             if (peek() == ',') {
@@ -108,7 +108,7 @@ private:
     int column_ = 1;
 };
 
-}  // namespace
+} // namespace
 
 std::string snake_case(const std::string &name) {
     std::string out;
@@ -130,4 +130,4 @@ std::map<std::string, pddl::Location> index_json_positions(const std::string &te
     return out;
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -18,4 +18,4 @@ std::map<std::string, pddl::Location> index_json_positions(const std::string &te
 // lowerCamelCase -> snake_case ("addPrecondition" -> "add_precondition").
 std::string snake_case(const std::string &name);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -72,7 +72,7 @@ void write_problem(std::ostream &out, const pddl::Problem &p) {
     out << p.minimize_total_cost;
 }
 
-}  // namespace
+} // namespace
 
 TaskKey lifted_key(const pddl::Domain &domain, const pddl::Problem &problem) {
     std::ostringstream out;
@@ -81,4 +81,4 @@ TaskKey lifted_key(const pddl::Domain &domain, const pddl::Problem &problem) {
     return key_of_text(out.str());
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -13,4 +13,4 @@ namespace envdesign::design {
 
 TaskKey lifted_key(const pddl::Domain &domain, const pddl::Problem &problem);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

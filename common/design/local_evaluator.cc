@@ -69,7 +69,7 @@ private:
     bool closed_ = false;
 };
 
-}  // namespace
+} // namespace
 
 LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
                                planning::PlannerOptions options)
@@ -82,8 +82,8 @@ TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configurati
     return evaluate_explicability(models, problem_.weights.distance, cache_, deadline);
 }
 
-std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration,
-                                                      int task, const Deadline &deadline) {
+std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration, int task,
+                                                       const Deadline &deadline) {
     ModelPair models = configured_models(problem_, configuration, task);
     PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, cache_, deadline);
     if (robot.status == PlanStatus::SOLVED)
@@ -156,4 +156,4 @@ EvaluatorCounters LocalEvaluator::counters() const {
             c.planner_seconds};
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -39,4 +39,4 @@ private:
     long long task_evaluations_ = 0;
 };
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -12,7 +12,7 @@ double combine(const ObjectiveWeights &w, const ObjectiveTerms &t) {
     return w.alpha * t.inexplicability + w.beta * t.design_cost + w.kappa * t.robot_cost;
 }
 
-}  // namespace
+} // namespace
 
 double discounted_horizon(const ObjectiveWeights &weights) {
     if (weights.gamma >= 1)
@@ -33,7 +33,7 @@ Objective objective_of(const DesignProblem &problem, double design_cost,
         if (p <= 0)
             continue;
         if (tasks[i].status != ExplicabilityStatus::SOLVED)
-            return out;  // infinite
+            return out; // infinite
         expected_ie += p * tasks[i].ie;
         expected_cost += p * tasks[i].robot_cost;
     }
@@ -57,7 +57,8 @@ double objective_lower_bound(const DesignProblem &problem, double design_cost,
         if (t && t->status == ExplicabilityStatus::INEXPLICABLE)
             return INF;
         bool solved = t && t->status == ExplicabilityStatus::SOLVED;
-        double bound = i < robot_cost_bounds.size() && robot_cost_bounds[i] ? *robot_cost_bounds[i] : 0.0;
+        double bound =
+            i < robot_cost_bounds.size() && robot_cost_bounds[i] ? *robot_cost_bounds[i] : 0.0;
         if (!solved && std::isinf(bound))
             return INF;
         expected_ie += p * (solved ? t->ie : least_ie(w.distance));
@@ -86,4 +87,4 @@ bool ranks_before(const RankedDesign &a, const RankedDesign &b) {
     return a.configuration < b.configuration;
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

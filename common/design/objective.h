@@ -18,9 +18,9 @@
 namespace envdesign::design {
 
 struct ObjectiveTerms {
-    double inexplicability = INF;  // f_T(E[IE])
-    double design_cost = 0;        // C(xi)
-    double robot_cost = INF;       // T * E[c_R(pi)]
+    double inexplicability = INF; // f_T(E[IE])
+    double design_cost = 0;       // C(xi)
+    double robot_cost = INF;      // T * E[c_R(pi)]
 };
 
 struct Objective {
@@ -57,4 +57,4 @@ struct RankedDesign {
 // The total order of SPEC.md's tie-breaking rules.
 bool ranks_before(const RankedDesign &a, const RankedDesign &b);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -37,7 +37,7 @@ PlanOutcome PlanCache::memoized(Answers &answers, const TaskKey &key, bool lifte
         }
     }
     if (!owner)
-        return answer.get();  // blocks while another thread computes the same answer
+        return answer.get(); // blocks while another thread computes the same answer
     PlanOutcome outcome;
     try {
         outcome = compute();
@@ -76,8 +76,9 @@ PlanOutcome PlanCache::run_planner(const ground::GroundTask &canonical, const De
         outcome.plan = report.plan;
         // Canonical operators are sorted by name, and a ground action's name is unique.
         for (const auto &step : report.plan) {
-            auto it = std::lower_bound(canonical.operators.begin(), canonical.operators.end(), step,
-                                       [](const auto &op, const std::string &name) { return op.name < name; });
+            auto it = std::lower_bound(
+                canonical.operators.begin(), canonical.operators.end(), step,
+                [](const auto &op, const std::string &name) { return op.name < name; });
             outcome.secondary_cost += it->secondary_cost;
         }
     } else {
@@ -90,4 +91,4 @@ PlanOutcome PlanCache::run_planner(const ground::GroundTask &canonical, const De
     return outcome;
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

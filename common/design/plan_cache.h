@@ -30,16 +30,16 @@ enum class PlanStatus { SOLVED, UNSOLVABLE, LIMIT };
 
 struct PlanOutcome {
     PlanStatus status = PlanStatus::LIMIT;
-    long long cost = 0;            // primary cost of the plan
-    long long secondary_cost = 0;  // sum of the operators' secondary costs
+    long long cost = 0;           // primary cost of the plan
+    long long secondary_cost = 0; // sum of the operators' secondary costs
     std::vector<std::string> plan;
 };
 
 struct CacheCounters {
-    long long planner_runs = 0;  // searches actually run
-    long long cache_hits = 0;    // answers taken from an equal task (or an equal lifted model)
-    long long groundings_skipped = 0;  // of those, found by the lifted model
-    double planner_seconds = 0;  // time spent in those searches, summed over threads
+    long long planner_runs = 0;       // searches actually run
+    long long cache_hits = 0;         // answers taken from an equal task (or an equal lifted model)
+    long long groundings_skipped = 0; // of those, found by the lifted model
+    double planner_seconds = 0;       // time spent in those searches, summed over threads
 };
 
 class PlanCache {
@@ -52,7 +52,8 @@ public:
 
     // The answer for a lifted model whose content address is `lifted`; calls `ground` and
     // solve() only when no model with that address was seen.
-    PlanOutcome solve_model(const TaskKey &lifted, const std::function<ground::GroundTask()> &ground,
+    PlanOutcome solve_model(const TaskKey &lifted,
+                            const std::function<ground::GroundTask()> &ground,
                             const Deadline &deadline);
 
     CacheCounters counters() const;
@@ -68,9 +69,9 @@ private:
 
     planning::PlannerOptions options_;
     mutable std::mutex mutex_;
-    Answers answers_;         // by ground task
-    Answers model_answers_;   // by lifted model
+    Answers answers_;       // by ground task
+    Answers model_answers_; // by lifted model
     CacheCounters counters_;
 };
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -15,7 +15,7 @@ std::string number(double value) {
     return buffer;
 }
 
-}  // namespace
+} // namespace
 
 void ProgressPrinter::update(const SearchProgress &p) {
     auto now = std::chrono::steady_clock::now();
@@ -28,8 +28,9 @@ void ProgressPrinter::update(const SearchProgress &p) {
     std::string bar(std::min(filled, WIDTH), '#');
     bar.resize(WIDTH, '-');
     double seconds = std::chrono::duration<double>(now - start_).count();
-    std::fprintf(out_, "\r[%s] %lld/%lld configurations | best %s | %lld planner runs | "
-                       "%lld cache hits | %.1fs\033[K",
+    std::fprintf(out_,
+                 "\r[%s] %lld/%lld configurations | best %s | %lld planner runs | "
+                 "%lld cache hits | %.1fs\033[K",
                  bar.c_str(), p.done, p.total, number(p.best_objective).c_str(), p.planner_runs,
                  p.cache_hits, seconds);
     std::fflush(out_);
@@ -58,4 +59,4 @@ void ProgressPrinter::finish(const DesignResult &result) {
     std::fflush(out_);
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -30,4 +30,4 @@ private:
     std::chrono::steady_clock::time_point last_draw_{};
 };
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -11,9 +11,9 @@ namespace envdesign::design {
 namespace {
 
 struct Touched {
-    std::set<std::string> schemas;         // "move"
-    std::set<std::string> ground_actions;  // "(move c00 c01)"
-    std::set<std::string> atoms;           // "(connected c00 c01)"
+    std::set<std::string> schemas;        // "move"
+    std::set<std::string> ground_actions; // "(move c00 c01)"
+    std::set<std::string> atoms;          // "(connected c00 c01)"
 };
 
 // "(move c00 c01)" -> {"move", "c00", "c01"}
@@ -51,8 +51,8 @@ void add_plan(const pddl::Domain &domain, const std::vector<std::string> &plan, 
     }
 }
 
-void add_optimal_plan(const pddl::Domain &domain, const pddl::Problem &problem,
-                      PlanCache &planner, const Deadline &deadline, Touched &touched) {
+void add_optimal_plan(const pddl::Domain &domain, const pddl::Problem &problem, PlanCache &planner,
+                      const Deadline &deadline, Touched &touched) {
     PlanOutcome outcome = solve_model(domain, problem, planner, deadline);
     if (outcome.status == PlanStatus::SOLVED)
         add_plan(domain, outcome.plan, touched);
@@ -69,14 +69,15 @@ bool touches(const Edit &edit, const Touched &touched) {
     case EditKind::REMOVE_INIT:
         return touched.atoms.count(edit.expression.to_string()) > 0;
     case EditKind::REMOVE_ACTION:
-        return edit.expression.is_list ? touched.ground_actions.count(edit.expression.to_string()) > 0
-                                       : touched.schemas.count(edit.expression.symbol) > 0;
+        return edit.expression.is_list
+                   ? touched.ground_actions.count(edit.expression.to_string()) > 0
+                   : touched.schemas.count(edit.expression.symbol) > 0;
     default:
         return touched.schemas.count(edit.action) > 0;
     }
 }
 
-}  // namespace
+} // namespace
 
 std::vector<int> relevant_modifications(const DesignProblem &problem,
                                         const Configuration &configuration, PlanCache &planner,
@@ -100,4 +101,4 @@ std::vector<int> relevant_modifications(const DesignProblem &problem,
     return relevant;
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -30,4 +30,4 @@ std::vector<int> relevant_modifications(const DesignProblem &problem,
                                         const Configuration &configuration, PlanCache &planner,
                                         const Deadline &deadline);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

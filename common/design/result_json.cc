@@ -42,7 +42,7 @@ nlohmann::json tasks_json(const DesignProblem &problem, const EvaluatedDesign &d
     return tasks;
 }
 
-}  // namespace
+} // namespace
 
 nlohmann::json json_number(std::optional<double> value) {
     if (!value)
@@ -94,4 +94,4 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
     return out;
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -19,4 +19,4 @@ nlohmann::json explicability_json(const TaskExplicability &result);
 //  "configurations_evaluated", "planner_runs", "seconds", ...statistics}
 nlohmann::json design_json(const DesignProblem &problem, const DesignResult &result);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -24,10 +24,10 @@ Model model_from_proto(proto::Edit::Model model) {
 
 struct KindText {
     EditKind kind;
-    std::string field;   // the oneof member, e.g. "add_precondition"
-    std::string action;  // for the schema edits
+    std::string field;  // the oneof member, e.g. "add_precondition"
+    std::string action; // for the schema edits
     std::string text;
-    std::string text_field;  // where the text is: "add_init" or "add_effect.literal"
+    std::string text_field; // where the text is: "add_init" or "add_effect.literal"
 };
 
 KindText kind_text(const proto::Edit &e) {
@@ -38,17 +38,23 @@ KindText kind_text(const proto::Edit &e) {
         return KindText{kind, field, "", text, field};
     };
     switch (e.kind_case()) {
-    case proto::Edit::kAddInit: return plain(EditKind::ADD_INIT, "add_init", e.add_init());
-    case proto::Edit::kRemoveInit: return plain(EditKind::REMOVE_INIT, "remove_init", e.remove_init());
-    case proto::Edit::kAddGoal: return plain(EditKind::ADD_GOAL, "add_goal", e.add_goal());
-    case proto::Edit::kRemoveGoal: return plain(EditKind::REMOVE_GOAL, "remove_goal", e.remove_goal());
+    case proto::Edit::kAddInit:
+        return plain(EditKind::ADD_INIT, "add_init", e.add_init());
+    case proto::Edit::kRemoveInit:
+        return plain(EditKind::REMOVE_INIT, "remove_init", e.remove_init());
+    case proto::Edit::kAddGoal:
+        return plain(EditKind::ADD_GOAL, "add_goal", e.add_goal());
+    case proto::Edit::kRemoveGoal:
+        return plain(EditKind::REMOVE_GOAL, "remove_goal", e.remove_goal());
     case proto::Edit::kAddPredicate:
         return plain(EditKind::ADD_PREDICATE, "add_predicate", e.add_predicate());
     case proto::Edit::kAddPrecondition:
         return literal(EditKind::ADD_PRECONDITION, "add_precondition", e.add_precondition());
     case proto::Edit::kRemovePrecondition:
-        return literal(EditKind::REMOVE_PRECONDITION, "remove_precondition", e.remove_precondition());
-    case proto::Edit::kAddEffect: return literal(EditKind::ADD_EFFECT, "add_effect", e.add_effect());
+        return literal(EditKind::REMOVE_PRECONDITION, "remove_precondition",
+                       e.remove_precondition());
+    case proto::Edit::kAddEffect:
+        return literal(EditKind::ADD_EFFECT, "add_effect", e.add_effect());
     case proto::Edit::kRemoveEffect:
         return literal(EditKind::REMOVE_EFFECT, "remove_effect", e.remove_effect());
     case proto::Edit::kRemoveAction:
@@ -91,8 +97,8 @@ private:
     void apply(const Edit &edit, std::size_t index, bool robot, pddl::Domain &domain,
                pddl::Problem &problem, std::size_t task) {
         std::string where = " (in the " + model_name(robot) + " model of task '" +
-                            problem_.tasks[task].name + "', modification '" +
-                            modification_.name + "')";
+                            problem_.tasks[task].name + "', modification '" + modification_.name +
+                            "')";
         try {
             apply_edit(edit, domain, &problem, ApplyMode::STRICT);
         } catch (const NotPresentError &e) {
@@ -112,14 +118,15 @@ private:
 
 // Two modifications that declare the same predicate must agree, or applying both fails.
 void check_predicate_declarations(const DesignProblem &problem) {
-    std::map<std::string, std::pair<std::string, std::string>> declared;  // name -> text, by
+    std::map<std::string, std::pair<std::string, std::string>> declared; // name -> text, by
     for (const auto &m : problem.modifications) {
         for (const auto &edit : m.edits) {
             if (edit.kind != EditKind::ADD_PREDICATE || !edit.expression.is_list ||
                 edit.expression.items.empty())
                 continue;
             const std::string &name = edit.expression.items[0].symbol;
-            auto [it, inserted] = declared.emplace(name, std::pair{edit.expression.to_string(), m.name});
+            auto [it, inserted] =
+                declared.emplace(name, std::pair{edit.expression.to_string(), m.name});
             if (!inserted && it->second.first != edit.expression.to_string())
                 throw ParseError(edit.location, "predicate '" + name +
                                                     "' is declared differently by modification '" +
@@ -128,7 +135,7 @@ void check_predicate_declarations(const DesignProblem &problem) {
     }
 }
 
-}  // namespace
+} // namespace
 
 Edit edit_from_proto(const proto::Edit &edit, const std::string &field, const SpecFile &spec) {
     KindText k = kind_text(edit);
@@ -142,7 +149,8 @@ Edit edit_from_proto(const proto::Edit &edit, const std::string &field, const Sp
         throw ParseError(spec.at(at), edit_kind_name(k.kind) + " needs a value");
     bool schema_edit = k.text_field != k.field;
     if (schema_edit && k.action.empty())
-        throw ParseError(spec.at(field + "." + k.field), edit_kind_name(k.kind) + " needs an action");
+        throw ParseError(spec.at(field + "." + k.field),
+                         edit_kind_name(k.kind) + " needs an action");
     return parse_edit_text(k.kind, model_from_proto(edit.model()), k.action, k.text, spec.at(at));
 }
 
@@ -152,10 +160,10 @@ void check_design_problem(const DesignProblem &problem, const SpecFile &spec) {
         try {
             compile_explicable(models);
         } catch (const ParseError &e) {
-            throw ParseError(e.location(), e.message() + "\n" +
-                                               spec.at("task[" + std::to_string(t) + "]").to_string() +
-                                               ": note: while compiling task '" +
-                                               problem.tasks[t].name + "'");
+            throw ParseError(e.location(),
+                             e.message() + "\n" +
+                                 spec.at("task[" + std::to_string(t) + "]").to_string() +
+                                 ": note: while compiling task '" + problem.tasks[t].name + "'");
         }
     }
     for (const auto &m : problem.modifications)
@@ -163,4 +171,4 @@ void check_design_problem(const DesignProblem &problem, const SpecFile &spec) {
     check_predicate_declarations(problem);
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -18,4 +18,4 @@ Edit edit_from_proto(const proto::Edit &edit, const std::string &field, const Sp
 // A remove is an error only when no task has what it removes.
 void check_design_problem(const DesignProblem &problem, const SpecFile &spec);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

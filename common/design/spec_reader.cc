@@ -18,7 +18,7 @@ namespace gp = google::protobuf;
 
 struct PathStep {
     std::string field;
-    int index = -1;  // -1: a singular field
+    int index = -1; // -1: a singular field
 };
 
 std::vector<PathStep> split_path(const std::string &path) {
@@ -114,10 +114,12 @@ private:
 };
 
 bool ends_with(const std::string &s, const std::string &suffix) {
-    return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return s.size() >= suffix.size() &&
+           s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-pddl::Location location_of_byte(const std::string &text, std::size_t byte, const std::string &file) {
+pddl::Location location_of_byte(const std::string &text, std::size_t byte,
+                                const std::string &file) {
     pddl::Location where{file, 1, 1};
     for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
         if (text[i] == '\n') {
@@ -132,15 +134,14 @@ pddl::Location location_of_byte(const std::string &text, std::size_t byte, const
 
 SpecFile read_json(const std::string &text, const std::string &path) {
     try {
-        auto parsed = nlohmann::json::parse(text);  // only for the position of a syntax error
+        auto parsed = nlohmann::json::parse(text); // only for the position of a syntax error
         (void)parsed;
     } catch (const nlohmann::json::parse_error &e) {
         std::string message = e.what();
         auto reason = message.find("syntax error");
-        throw pddl::ParseError(location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
-                               "malformed JSON: " + (reason == std::string::npos
-                                                         ? message
-                                                         : message.substr(reason)));
+        throw pddl::ParseError(
+            location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
+            "malformed JSON: " + (reason == std::string::npos ? message : message.substr(reason)));
     }
     auto locations = std::make_unique<JsonLocations>(path, index_json_positions(text, path));
     SpecFile spec{path, {}, nullptr};
@@ -171,7 +172,7 @@ SpecFile read_text(const std::string &text, const std::string &path) {
     return spec;
 }
 
-}  // namespace
+} // namespace
 
 SpecLocations::~SpecLocations() = default;
 
@@ -188,4 +189,4 @@ SpecFile read_spec_file(const std::string &path) {
     return read_spec_text(buffer.str(), path);
 }
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

@@ -44,4 +44,4 @@ SpecFile read_spec_file(const std::string &path);
 // chosen by its extension.
 SpecFile read_spec_text(const std::string &text, const std::string &path);
 
-}  // namespace envdesign::design
+} // namespace envdesign::design

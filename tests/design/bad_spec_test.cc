@@ -8,8 +8,8 @@ namespace envdesign::testing {
 namespace {
 
 struct BadSpec {
-    std::string file;      // in data/design/bad
-    std::string expected;  // "FILE:LINE:..." prefix and message part
+    std::string file;     // in data/design/bad
+    std::string expected; // "FILE:LINE:..." prefix and message part
 };
 
 void PrintTo(const BadSpec &spec, std::ostream *out) { *out << spec.file; }
@@ -21,31 +21,37 @@ TEST_P(BadSpecTest, ExitsTwoAndNamesTheLine) {
     CommandResult result = run_envdesign("design " + dir + GetParam().file + " --json");
     EXPECT_EQ(result.exit_code, 2) << result.out;
     EXPECT_NE(result.out.find(dir + GetParam().expected), std::string::npos)
-        << "expected '" << GetParam().expected << "' in:\n" << result.out;
+        << "expected '" << GetParam().expected << "' in:\n"
+        << result.out;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Specs, BadSpecTest,
     ::testing::Values(
-        BadSpec{"unknown-action.textproto", "unknown-action.textproto:6:43: error: unknown action 'fly'"},
+        BadSpec{"unknown-action.textproto",
+                "unknown-action.textproto:6:43: error: unknown action 'fly'"},
         BadSpec{"arity.textproto",
                 "arity.textproto:6:23: error: 'connected' takes 2 argument(s) but is given 1"},
         BadSpec{"unknown-object.textproto",
                 "unknown-object.textproto:7:10: error: undefined object or constant 'c99'"},
         BadSpec{"unknown-parameter.textproto",
                 "unknown-parameter.textproto:6:38: error: undefined variable '?somewhere'"},
-        BadSpec{"remove-absent.textproto",
-                "remove-absent.textproto:6:23: error: (connected c00 c01) is not in the initial state"},
+        BadSpec{
+            "remove-absent.textproto",
+            "remove-absent.textproto:6:23: error: (connected c00 c01) is not in the initial state"},
         BadSpec{"negative-probability.textproto",
                 "negative-probability.textproto:5:8: error: the probability of task 'g2' must be"},
         BadSpec{"missing-file.textproto",
                 "missing-file.textproto:4:19: error: cannot open 'nowhere.pddl'"},
         BadSpec{"malformed.textproto", "malformed.textproto:8:1: error: Expected identifier"},
-        BadSpec{"unknown-field.textproto", "unknown-field.textproto:4:6: error: Message type \"envdesign.proto.DesignProblem\" has no field named \"alhpa\""},
+        BadSpec{"unknown-field.textproto",
+                "unknown-field.textproto:4:6: error: Message type "
+                "\"envdesign.proto.DesignProblem\" has no field named \"alhpa\""},
         BadSpec{"no-kind.textproto", "no-kind.textproto:6:3: error: an edit needs exactly one of"},
         BadSpec{"two-kinds.textproto", "two-kinds.textproto:6:"},
         BadSpec{"unbalanced-literal.textproto", "unbalanced-literal.textproto:6:"},
-        BadSpec{"no-task.textproto", "no-task.textproto:1:1: error: the design problem has no task"},
+        BadSpec{"no-task.textproto",
+                "no-task.textproto:1:1: error: the design problem has no task"},
         BadSpec{"malformed.json", "malformed.json:4:"},
         BadSpec{"unknown-object.json",
                 "unknown-object.json:7:16: error: undefined object or constant 'c99'"}));
@@ -65,5 +71,5 @@ TEST(BadSpec, ConnectIsNotAvailableYet) {
     EXPECT_NE(result.out.find("issue 5"), std::string::npos) << result.out;
 }
 
-}  // namespace
-}  // namespace envdesign::testing
+} // namespace
+} // namespace envdesign::testing

@@ -31,7 +31,7 @@ TEST(Blocksworld, TheSignMakesEveryTaskExplicable) {
     EXPECT_EQ(design_names(problem, r.best->ranked.configuration),
               std::vector<std::string>{"one-hand-sign"});
     const double f = (1 - std::pow(0.9, 10)) / 0.1;
-    const double robot = 10 * (0.4 * 10 + 0.4 * 6 + 0.2 * 18);  // T * E[c_R] = 100
+    const double robot = 10 * (0.4 * 10 + 0.4 * 6 + 0.2 * 18); // T * E[c_R] = 100
     EXPECT_NEAR(r.best->objective.value, f * 1 + 0.25 * 1.5 + 0.25 * robot, 1e-9);
     double baseline_ie = 0.4 * std::exp(4.0) + 0.4 * std::exp(2.0) + 0.2 * std::exp(8.0);
     EXPECT_NEAR(r.baseline->objective.value, f * baseline_ie + 0.25 * robot, 1e-6);
@@ -72,8 +72,8 @@ TEST(Blocksworld, APosterNobodyReadsCostsNoPlannerRun) {
     int poster = index_of(problem, "poster");
     ASSERT_GE(poster, 0);
     for (int t = 0; t < 3; ++t)
-        evaluate_explicability(configured_models(problem, {}, t), Distance::EXP_COST_DIFF,
-                               planner, Deadline{});
+        evaluate_explicability(configured_models(problem, {}, t), Distance::EXP_COST_DIFF, planner,
+                               Deadline{});
     long long runs = planner.counters().planner_runs;
     for (int t = 0; t < 3; ++t)
         evaluate_explicability(configured_models(problem, {poster}, t), Distance::EXP_COST_DIFF,
@@ -82,5 +82,5 @@ TEST(Blocksworld, APosterNobodyReadsCostsNoPlannerRun) {
     EXPECT_EQ(planner.counters().cache_hits, 6);
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design

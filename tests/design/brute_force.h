@@ -16,9 +16,9 @@
 namespace envdesign::design::testing {
 
 struct BruteForce {
-    double human_optimal_cost = INF;  // least cost of a sequence valid in P_H
-    double human_plan_cost = INF;     // least human cost of a sequence valid in both
-    double robot_cost = INF;          // least robot cost among those
+    double human_optimal_cost = INF; // least cost of a sequence valid in P_H
+    double human_plan_cost = INF;    // least human cost of a sequence valid in both
+    double robot_cost = INF;         // least robot cost among those
 };
 
 class BruteForceSearch {
@@ -35,8 +35,8 @@ public:
 
     BruteForce run() {
         std::vector<std::string> plan;
-        extend(plan, true);   // sequences executable in both models
-        extend(plan, false);  // sequences executable in the human's model
+        extend(plan, true);  // sequences executable in both models
+        extend(plan, false); // sequences executable in the human's model
         return best_;
     }
 
@@ -54,13 +54,15 @@ private:
                 return;
             if (robot.valid && human.valid) {
                 double h = static_cast<double>(human.cost), r = static_cast<double>(robot.cost);
-                if (h < best_.human_plan_cost || (h == best_.human_plan_cost && r < best_.robot_cost)) {
+                if (h < best_.human_plan_cost ||
+                    (h == best_.human_plan_cost && r < best_.robot_cost)) {
                     best_.human_plan_cost = h;
                     best_.robot_cost = r;
                 }
             }
         } else if (human.valid) {
-            best_.human_optimal_cost = std::min(best_.human_optimal_cost, static_cast<double>(human.cost));
+            best_.human_optimal_cost =
+                std::min(best_.human_optimal_cost, static_cast<double>(human.cost));
         }
         if (static_cast<int>(plan.size()) >= max_length_)
             return;
@@ -81,4 +83,4 @@ inline BruteForce brute_force_explicability(const ModelPair &models, int max_len
     return BruteForceSearch(models, max_length).run();
 }
 
-}  // namespace envdesign::design::testing
+} // namespace envdesign::design::testing

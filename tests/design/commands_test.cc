@@ -22,10 +22,10 @@ nlohmann::json run_json(const std::string &arguments, int expected_exit) {
 
 // Serving G2 the robot needs 8 actions, the customers expect 4: IE = e^4.
 TEST(ExplicableCommand, JsonOfTheRestaurant) {
-    auto out = run_json("explicable --robot-domain " + RESTAURANT + "domain.pddl --problem " +
-                            RESTAURANT + "serve-g2.pddl --human-problem " + RESTAURANT +
-                            "serve-g2-human.pddl --json",
-                        0);
+    auto out =
+        run_json("explicable --robot-domain " + RESTAURANT + "domain.pddl --problem " + RESTAURANT +
+                     "serve-g2.pddl --human-problem " + RESTAURANT + "serve-g2-human.pddl --json",
+                 0);
     EXPECT_EQ(out["status"], "solved");
     EXPECT_NEAR(out["ie"].get<double>(), std::exp(4.0), 1e-9);
     EXPECT_EQ(out["robot_cost"], 8);
@@ -61,9 +61,10 @@ TEST(DesignCommand, JsonOfSettingC) {
     double objective = out["objective"];
     const auto &terms = out["terms"];
     // objective = alpha * inexplicability + beta * design_cost + kappa * robot_cost
-    EXPECT_NEAR(objective, 1 * terms["inexplicability"].get<double>() +
-                               30 * terms["design_cost"].get<double>() +
-                               0.25 * terms["robot_cost"].get<double>(),
+    EXPECT_NEAR(objective,
+                1 * terms["inexplicability"].get<double>() +
+                    30 * terms["design_cost"].get<double>() +
+                    0.25 * terms["robot_cost"].get<double>(),
                 1e-9);
     EXPECT_NEAR(objective, 85.263215599, 1e-6);
     EXPECT_EQ(out["tasks"].size(), 2u);
@@ -76,19 +77,22 @@ TEST(DesignCommand, JsonOfSettingC) {
 }
 
 TEST(DesignCommand, MaxDesignSizeFromTheCommandLine) {
-    auto out = run_json("design " + RESTAURANT + "c-two-tasks-t10.textproto --json --max-design-size 1", 0);
+    auto out = run_json(
+        "design " + RESTAURANT + "c-two-tasks-t10.textproto --json --max-design-size 1", 0);
     EXPECT_LE(out["design"].size(), 1u);
     EXPECT_EQ(out["configurations_total"], 7);
 }
 
 TEST(DesignCommand, ATimeLimitThatStopsTheSearchExitsFour) {
-    auto out = run_json("design " + RESTAURANT + "c-two-tasks-t10.textproto --json --time-limit 0.000001", 4);
+    auto out = run_json(
+        "design " + RESTAURANT + "c-two-tasks-t10.textproto --json --time-limit 0.000001", 4);
     EXPECT_EQ(out["status"], "best_found");
     EXPECT_TRUE(out["limit_reached"].get<bool>());
 }
 
 TEST(DesignCommand, PruneRelevantIsNotProvenOptimal) {
-    auto out = run_json("design " + RESTAURANT + "c-two-tasks-t10.textproto --json --prune relevant", 0);
+    auto out =
+        run_json("design " + RESTAURANT + "c-two-tasks-t10.textproto --json --prune relevant", 0);
     EXPECT_EQ(out["status"], "best_found");
     EXPECT_GT(out["configurations_pruned"].get<int>(), 0);
 }
@@ -102,5 +106,5 @@ TEST(DesignCommand, OneSummaryLineOnStderrWhenNotATerminal) {
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
 }
 
-}  // namespace
-}  // namespace envdesign::testing
+} // namespace
+} // namespace envdesign::testing

@@ -29,16 +29,19 @@ TaskExplicability solved(double ie, double robot_cost) {
 // evaluations every answer is LIMIT (a deadline that passed).
 class ScriptedEvaluator : public Evaluator {
 public:
-    ScriptedEvaluator(Script script, long long budget = -1) : script_(std::move(script)), budget_(budget) {}
+    ScriptedEvaluator(Script script, long long budget = -1)
+        : script_(std::move(script)), budget_(budget) {}
 
     void evaluate(const std::vector<Configuration> &batch, const Deadline &,
                   const EvaluationCallbacks &callbacks) override {
         for (const auto &configuration : batch) {
             auto answers = script_(configuration);
-            ConfigurationEvaluation e{configuration, EvaluationStatus::COMPLETE,
+            ConfigurationEvaluation e{configuration,
+                                      EvaluationStatus::COMPLETE,
                                       std::vector<std::optional<TaskExplicability>>(answers.size()),
                                       {}};
-            for (std::size_t t = 0; t < answers.size() && e.status == EvaluationStatus::COMPLETE; ++t) {
+            for (std::size_t t = 0; t < answers.size() && e.status == EvaluationStatus::COMPLETE;
+                 ++t) {
                 if (callbacks.abandon(e))
                     e.status = EvaluationStatus::CUT_OFF;
                 else if (budget_ >= 0 && counters_.task_evaluations >= budget_)
@@ -103,14 +106,15 @@ Exhaustive exhaustive(const DesignProblem &p, const Script &script, int max_size
         auto tasks = script(c);
         double ie = 0, rc = 0;
         for (std::size_t t = 0; t < tasks.size(); ++t)
-            ie += p.tasks[t].probability * tasks[t].ie, rc += p.tasks[t].probability * tasks[t].robot_cost;
+            ie += p.tasks[t].probability * tasks[t].ie,
+                rc += p.tasks[t].probability * tasks[t].robot_cost;
         double value = p.weights.alpha * f * ie + p.weights.beta * cost +
                        p.weights.kappa * p.weights.horizon * rc;
         bool tie = std::abs(value - out.objective) <= 1e-9 * std::max(1.0, std::abs(value));
-        bool better = !tie ? value < out.objective
-                           : c.size() != out.best.size() ? c.size() < out.best.size()
-                           : cost != best_cost           ? cost < best_cost
-                                                         : c < out.best;
+        bool better = !tie                          ? value < out.objective
+                      : c.size() != out.best.size() ? c.size() < out.best.size()
+                      : cost != best_cost           ? cost < best_cost
+                                                    : c < out.best;
         if (better)
             out = {c, value}, best_cost = cost;
     }
@@ -156,7 +160,7 @@ TEST(DesignSearch, AnExpensiveDesignSpaceIsSkippedByTheBound) {
     DesignResult r = search_design(p, evaluator, {});
     EXPECT_TRUE(r.optimal);
     EXPECT_TRUE(r.best->ranked.configuration.empty());
-    EXPECT_EQ(evaluator.evaluated().size(), 1u);  // objective 4 < 1 + 10: sizes >= 1 skipped
+    EXPECT_EQ(evaluator.evaluated().size(), 1u); // objective 4 < 1 + 10: sizes >= 1 skipped
     EXPECT_EQ(r.counters.configurations_skipped, 15);
 }
 
@@ -164,7 +168,8 @@ TEST(DesignSearch, EqualDesignsGoToTheEarlierModification) {
     DesignProblem p = synthetic({1, 1, 1}, {1}, {1, 1, 0, 1, 1});
     // m1 and m2 both fix the task; m0 does nothing.
     ScriptedEvaluator evaluator([](const Configuration &c) {
-        bool fixed = std::find(c.begin(), c.end(), 1) != c.end() || std::find(c.begin(), c.end(), 2) != c.end();
+        bool fixed = std::find(c.begin(), c.end(), 1) != c.end() ||
+                     std::find(c.begin(), c.end(), 2) != c.end();
         return std::vector{solved(fixed ? 1 : 100, 1)};
     });
     DesignResult r = search_design(p, evaluator, {});
@@ -172,8 +177,9 @@ TEST(DesignSearch, EqualDesignsGoToTheEarlierModification) {
 }
 
 TEST(DesignSearch, EqualObjectivesGoToTheCheaperDesign) {
-    DesignProblem p = synthetic({3, 2}, {1}, {1, 0, 0, 1, 1});  // beta 0: C does not count
-    ScriptedEvaluator evaluator([](const Configuration &c) { return std::vector{solved(c.empty() ? 9 : 1, 1)}; });
+    DesignProblem p = synthetic({3, 2}, {1}, {1, 0, 0, 1, 1}); // beta 0: C does not count
+    ScriptedEvaluator evaluator(
+        [](const Configuration &c) { return std::vector{solved(c.empty() ? 9 : 1, 1)}; });
     DesignResult r = search_design(p, evaluator, {});
     EXPECT_EQ(r.best->ranked.configuration, Configuration{1});
 }
@@ -194,7 +200,7 @@ TEST(DesignSearch, AnInfiniteBaselineIsBeatenByAnyFiniteDesign) {
 
 TEST(DesignSearch, ATimeLimitGivesTheBestFoundSoFar) {
     DesignProblem p = synthetic({1, 2, 0.5, 3, 1}, {0.3, 0.7}, {1, 0.25, 0.25, 0.9, 10});
-    ScriptedEvaluator evaluator(landscape, 9);  // the budget runs out during size 1
+    ScriptedEvaluator evaluator(landscape, 9); // the budget runs out during size 1
     DesignResult r = search_design(p, evaluator, {});
     EXPECT_FALSE(r.optimal);
     EXPECT_TRUE(r.limit_reached);
@@ -218,8 +224,7 @@ TEST(DesignSearch, PruningGrowsOnlyRelevantConfigurations) {
     DesignResult r = search_design(p, evaluator, options);
     EXPECT_FALSE(r.optimal);
     EXPECT_FALSE(r.limit_reached);
-    EXPECT_EQ(evaluator.evaluated(),
-              (std::vector<Configuration>{{}, {0}, {2}, {0, 1}}));
+    EXPECT_EQ(evaluator.evaluated(), (std::vector<Configuration>{{}, {0}, {2}, {0, 1}}));
     EXPECT_EQ(r.counters.configurations_total, 8);
     EXPECT_EQ(r.counters.configurations_pruned, 4);
 }
@@ -242,5 +247,5 @@ TEST(DesignSearch, Binomial) {
     EXPECT_EQ(binomial(1000, 500), LLONG_MAX);
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design

@@ -39,9 +39,9 @@ TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
     for (const auto &job : sent)
         EXPECT_EQ(job.kind, JobKind::ROBOT_BOUND);
     EXPECT_EQ(sent[2].configuration, 1);
-    EXPECT_FALSE(d.next_job());  // everything waits for answers
+    EXPECT_FALSE(d.next_job()); // everything waits for answers
     answer_bound(sent[2], 8);
-    answer_bound(sent[3], 8);    // {0}: 16 > 10: abandoned, no compiled task solved
+    answer_bound(sent[3], 8); // {0}: 16 > 10: abandoned, no compiled task solved
     ASSERT_EQ(r.done.size(), 1u);
     EXPECT_EQ(r.done[0].status, EvaluationStatus::CUT_OFF);
     EXPECT_EQ(r.done[0].configuration, Configuration{0});
@@ -65,13 +65,13 @@ TEST(Dispatcher, WithoutBoundsOnlyCompiledTasks) {
     Dispatcher d({{}}, 1, false, r.callbacks);
     Job job = *d.next_job();
     EXPECT_EQ(job.kind, JobKind::EXPLICABILITY);
-    d.finish_rest();            // out of time while the job is away: reported when it is back
+    d.finish_rest(); // out of time while the job is away: reported when it is back
     EXPECT_TRUE(r.done.empty());
-    TaskExplicability limit;    // LIMIT
+    TaskExplicability limit; // LIMIT
     d.receive({job, std::nullopt, limit});
     ASSERT_EQ(r.done.size(), 1u);
     EXPECT_EQ(r.done[0].status, EvaluationStatus::LIMIT);
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design

@@ -61,7 +61,7 @@ protected:
 
 TEST_F(EditsTest, AddAndRemoveInit) {
     apply(EditKind::ADD_INIT, "(open b)");
-    apply(EditKind::ADD_INIT, "(OPEN b)", "", ApplyMode::LENIENT);  // already there
+    apply(EditKind::ADD_INIT, "(OPEN b)", "", ApplyMode::LENIENT); // already there
     apply(EditKind::REMOVE_INIT, "(connected a b)");
     EXPECT_EQ(init(), (std::vector<std::string>{"(at a)", "(connected b c)", "(connected a c)",
                                                 "(open b)"}));
@@ -119,16 +119,19 @@ TEST_F(EditsTest, RemoveOneGroundAction) {
 }
 
 TEST_F(EditsTest, BadNamesAreErrorsAtTheEdit) {
-    EXPECT_NE(error_of(EditKind::ADD_PRECONDITION, "(open ?to)", "fly").find("unknown action 'fly'"),
-              std::string::npos);
-    EXPECT_NE(error_of(EditKind::ADD_INIT, "(connected a)").find("takes 2 argument(s) but is given 1"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(EditKind::ADD_PRECONDITION, "(open ?to)", "fly").find("unknown action 'fly'"),
+        std::string::npos);
+    EXPECT_NE(
+        error_of(EditKind::ADD_INIT, "(connected a)").find("takes 2 argument(s) but is given 1"),
+        std::string::npos);
     EXPECT_NE(error_of(EditKind::ADD_INIT, "(open z)").find("undefined object or constant 'z'"),
               std::string::npos);
     EXPECT_NE(error_of(EditKind::ADD_INIT, "(closed a)").find("undefined predicate 'closed'"),
               std::string::npos);
-    EXPECT_NE(error_of(EditKind::ADD_PRECONDITION, "(open ?x)", "move").find("undefined variable '?x'"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(EditKind::ADD_PRECONDITION, "(open ?x)", "move").find("undefined variable '?x'"),
+        std::string::npos);
     EXPECT_NE(error_of(EditKind::ADD_INIT, "(open ?x)").find("undefined variable '?x'"),
               std::string::npos);
     EXPECT_NE(error_of(EditKind::REMOVE_ACTION, "(move a)").find("takes 2 argument(s)"),
@@ -145,5 +148,5 @@ TEST_F(EditsTest, MalformedTextIsAnErrorAtTheEdit) {
     }
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design

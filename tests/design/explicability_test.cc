@@ -123,7 +123,7 @@ INSTANTIATE_TEST_SUITE_P(Roads, AgainstBruteForce,
 // The restaurant (examples/restaurant): serving G1 the robot goes around the tables
 // (pick-up, 5 moves, put-down = 7); the observers expect the way between them (5).
 TEST(Explicability, RestaurantAgainstBruteForce) {
-    for (const std::string task : {"g1"}) {  // g2 needs 8 steps: too long to enumerate
+    for (const std::string task : {"g1"}) { // g2 needs 8 steps: too long to enumerate
         ModelPair m = load(RESTAURANT, "domain.pddl", "serve-" + task + ".pddl",
                            "serve-" + task + "-human.pddl");
         testing::BruteForce expected = testing::brute_force_explicability(m, 7);
@@ -191,5 +191,5 @@ TEST(Compilation, ParameterCountsMustAgree) {
     EXPECT_THROW(compile_explicable(m), pddl::ParseError);
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design

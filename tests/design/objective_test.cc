@@ -37,9 +37,9 @@ DesignProblem two_tasks(double p0, double p1, ObjectiveWeights w) {
 TEST(Objective, DiscountedHorizon) {
     EXPECT_NEAR(discounted_horizon({1, 1, 1, 0.9, 10}), 6.513215599, 1e-12);
     EXPECT_DOUBLE_EQ(discounted_horizon({1, 1, 1, 0.9, 1}), 1.0);
-    EXPECT_DOUBLE_EQ(discounted_horizon({1, 1, 1, 1.0, 7}), 7.0);    // gamma = 1: T
-    EXPECT_DOUBLE_EQ(discounted_horizon({1, 1, 1, 0.5, 3}), 1.75);   // 1 + 0.5 + 0.25
-    EXPECT_DOUBLE_EQ(discounted_horizon({1, 1, 1, 0.0, 5}), 1.0);    // only the first step
+    EXPECT_DOUBLE_EQ(discounted_horizon({1, 1, 1, 1.0, 7}), 7.0);  // gamma = 1: T
+    EXPECT_DOUBLE_EQ(discounted_horizon({1, 1, 1, 0.5, 3}), 1.75); // 1 + 0.5 + 0.25
+    EXPECT_DOUBLE_EQ(discounted_horizon({1, 1, 1, 0.0, 5}), 1.0);  // only the first step
 }
 
 // Probabilities 0.25 / 0.75, IE 3 and 1, robot costs 8 and 4; alpha 2, beta 5, kappa 0.5,
@@ -88,8 +88,8 @@ TEST(Ranking, LowerObjectiveFirst) {
 }
 
 TEST(Ranking, TiesGoToFewerModificationsThenCheaperThenEarlier) {
-    EXPECT_TRUE(ranks_before({10, 9, {3}}, {10, 1, {0, 1}}));   // fewer
-    EXPECT_TRUE(ranks_before({10, 1, {2}}, {10, 2, {0}}));      // cheaper
+    EXPECT_TRUE(ranks_before({10, 9, {3}}, {10, 1, {0, 1}}));    // fewer
+    EXPECT_TRUE(ranks_before({10, 1, {2}}, {10, 2, {0}}));       // cheaper
     EXPECT_TRUE(ranks_before({10, 1, {0, 3}}, {10, 1, {1, 2}})); // earlier in spec order
     EXPECT_FALSE(ranks_before({10, 1, {1, 2}}, {10, 1, {0, 3}}));
 }
@@ -103,8 +103,8 @@ TEST(Ranking, RoundingDoesNotBreakTies) {
 TEST(Ranking, InfiniteNeverBeatsFinite) {
     EXPECT_TRUE(ranks_before({1e300, 100, {0, 1, 2}}, {INF, 0, {}}));
     EXPECT_FALSE(ranks_before({INF, 0, {}}, {1e300, 100, {0, 1, 2}}));
-    EXPECT_TRUE(ranks_before({INF, 0, {}}, {INF, 0, {0}}));  // among infinite ones: fewer
+    EXPECT_TRUE(ranks_before({INF, 0, {}}, {INF, 0, {0}})); // among infinite ones: fewer
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design

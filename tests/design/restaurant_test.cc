@@ -56,8 +56,8 @@ TEST(Restaurant, TwoTasksTenTimesChoosesTheTwoBarriers) {
     EXPECT_NEAR(r.best->objective.value, 85.263215599, 1e-6);
     for (const auto &t : r.best->tasks)
         EXPECT_EQ(t.ie, 1.0);
-    EXPECT_NEAR(r.baseline->objective.value, 6.513215599 * (std::exp(2.0) + std::exp(4.0)) / 2 + 18.75,
-                1e-6);
+    EXPECT_NEAR(r.baseline->objective.value,
+                6.513215599 * (std::exp(2.0) + std::exp(4.0)) / 2 + 18.75, 1e-6);
     EXPECT_LT(r.counters.evaluator.planner_runs, 64 * 2 * 2);
 }
 
@@ -74,13 +74,14 @@ TEST(Restaurant, EveryConfigurationWithoutBoundsAgrees) {
                 c.push_back(m);
         double ie = 0, cost = 0;
         for (int t = 0; t < 2; ++t) {
-            auto e = evaluate_explicability(configured_models(problem, c, t), Distance::EXP_COST_DIFF,
-                                            planner, Deadline{});
+            auto e = evaluate_explicability(configured_models(problem, c, t),
+                                            Distance::EXP_COST_DIFF, planner, Deadline{});
             ie += 0.5 * e.ie;
             cost += 0.5 * e.robot_cost;
         }
         double value = f * ie + 30.0 * c.size() + 0.25 * 10 * cost;
-        if (value < best - 1e-9 || (std::abs(value - best) <= 1e-9 && c.size() < best_configuration.size()))
+        if (value < best - 1e-9 ||
+            (std::abs(value - best) <= 1e-9 && c.size() < best_configuration.size()))
             best = value, best_configuration = c;
     }
     DesignResult r = run(problem);
@@ -104,7 +105,8 @@ TEST(Restaurant, TwoWorkersGiveTheSameAnswer) {
 TEST(Restaurant, PruneRelevantFollowsThePlansNodeByNode) {
     DesignProblem problem = load_design_problem(DIR + "c-two-tasks-t10.textproto");
     LocalEvaluator evaluator(problem, 1);
-    std::vector<int> relevant = relevant_modifications(problem, {}, evaluator.planner(), Deadline{});
+    std::vector<int> relevant =
+        relevant_modifications(problem, {}, evaluator.planner(), Deadline{});
     std::vector<std::string> names = design_names(problem, relevant);
     EXPECT_EQ(std::count(names.begin(), names.end(), "barrier-00-01"), 1);
     EXPECT_EQ(std::count(names.begin(), names.end(), "barrier-01-02"), 1);
@@ -114,11 +116,11 @@ TEST(Restaurant, PruneRelevantFollowsThePlansNodeByNode) {
         return relevant_modifications(problem, c, evaluator.planner(), Deadline{});
     };
     DesignResult r = search_design(problem, evaluator, options);
-    EXPECT_FALSE(r.optimal);  // configurations were left out: not proven
+    EXPECT_FALSE(r.optimal); // configurations were left out: not proven
     EXPECT_GT(r.counters.configurations_pruned, 0);
     EXPECT_EQ(design_names(problem, r.best->ranked.configuration),
               (std::vector<std::string>{"barrier-00-01", "barrier-10-11"}));
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design

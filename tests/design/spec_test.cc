@@ -37,13 +37,13 @@ TEST(Spec, TextAndJsonGiveTheSameProblem) {
 }
 
 TEST(Spec, DefaultsWhenFieldsAreAbsent) {
-    SpecFile spec = read_spec_text(
-        "robot_domain: \"domain.pddl\"\n"
-        "task { name: \"a\" problem: \"serve-g1.pddl\" }\n"
-        "task { name: \"b\" problem: \"serve-g2.pddl\" probability: 3 }\n",
-        EXAMPLES + "inline.textproto");
+    SpecFile spec =
+        read_spec_text("robot_domain: \"domain.pddl\"\n"
+                       "task { name: \"a\" problem: \"serve-g1.pddl\" }\n"
+                       "task { name: \"b\" problem: \"serve-g2.pddl\" probability: 3 }\n",
+                       EXAMPLES + "inline.textproto");
     DesignProblem p = load_design_problem(spec);
-    EXPECT_DOUBLE_EQ(p.tasks[0].probability, 0.25);  // absent = 1, normalised over 1 + 3
+    EXPECT_DOUBLE_EQ(p.tasks[0].probability, 0.25); // absent = 1, normalised over 1 + 3
     EXPECT_DOUBLE_EQ(p.tasks[1].probability, 0.75);
     EXPECT_DOUBLE_EQ(p.weights.alpha, 1);
     EXPECT_DOUBLE_EQ(p.weights.gamma, 1);
@@ -59,7 +59,7 @@ TEST(Spec, FieldsAreLocatedInTextAndJson) {
     EXPECT_EQ(text.at("horizon").line, 37);
     SpecFile json = read_spec_file(DATA + "restaurant-c.json");
     EXPECT_EQ(json.at("task[1].human_problem").line, 13);
-    EXPECT_EQ(json.at("task[0].human_problem").line, 7);  // written "humanProblem"
+    EXPECT_EQ(json.at("task[0].human_problem").line, 7); // written "humanProblem"
 }
 
 TEST(Spec, ErrorsNameTheLineOfTheEdit) {
@@ -68,10 +68,11 @@ TEST(Spec, ErrorsNameTheLineOfTheEdit) {
         FAIL() << "no error";
     } catch (const pddl::ParseError &e) {
         EXPECT_EQ(e.location().line, 7);
-        EXPECT_NE(e.message().find("undefined object or constant 'c99'"), std::string::npos) << e.what();
+        EXPECT_NE(e.message().find("undefined object or constant 'c99'"), std::string::npos)
+            << e.what();
         EXPECT_NE(e.message().find("human model of task 'g1'"), std::string::npos) << e.what();
     }
 }
 
-}  // namespace
-}  // namespace envdesign::design
+} // namespace
+} // namespace envdesign::design
