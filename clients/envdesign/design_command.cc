@@ -101,8 +101,14 @@ int run_design(const DesignFlags &flags) {
                                                   options.deadline);
         };
     design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
-    design::DesignResult result = design::search_design(
-        problem, evaluator, options, [&](const design::SearchProgress &p) { printer.update(p); });
+    design::DesignResult result;
+    try {
+        result = design::search_design(problem, evaluator, options,
+                                       [&](const design::SearchProgress &p) { printer.update(p); });
+    } catch (const pddl::ParseError &e) {  // a modified model that does not ground
+        std::cerr << "\n" << e.what() << std::endl;
+        return 2;
+    }
     printer.finish(result);
     if (flags.json)
         std::cout << design::design_json(problem, result).dump() << std::endl;

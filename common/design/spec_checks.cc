@@ -2,6 +2,7 @@
 
 #include "design/compilation.h"
 #include "design/configuration.h"
+#include "ground/grounder.h"
 
 #include <map>
 #include <optional>
@@ -158,7 +159,11 @@ void check_design_problem(const DesignProblem &problem, const SpecFile &spec) {
     for (std::size_t t = 0; t < problem.tasks.size(); ++t) {
         ModelPair models = base_models(problem, static_cast<int>(t));
         try {
-            compile_explicable(models);
+            // Grounding finds what only it can (an action cost without a value).
+            CompiledTask compiled = compile_explicable(models);
+            ground::ground(compiled.domain, compiled.problem);
+            ground::ground(models.human_domain, models.human_problem);
+            ground::ground(models.robot_domain, models.robot_problem);
         } catch (const ParseError &e) {
             throw ParseError(e.location(),
                              e.message() + "\n" +

@@ -14,7 +14,8 @@ namespace envdesign::design {
 Edit edit_from_proto(const proto::Edit &edit, const std::string &field, const SpecFile &spec);
 
 // Applies each modification on its own, STRICT, to every task's robot and/or human model,
-// and compiles every task's unmodified pair; throws pddl::ParseError at the edit at fault.
+// and compiles and grounds every task's unmodified pair; throws pddl::ParseError at the
+// edit (or task) at fault.
 // A remove is an error only when no task has what it removes.
 void check_design_problem(const DesignProblem &problem, const SpecFile &spec);
 
