@@ -22,6 +22,7 @@ PlanReport plan_task(const ground::GroundTask &task, const PlannerOptions &optio
     for (ground::OperatorId op : result.plan)
         report.plan.push_back(task.operators[op].name);
     report.cost = result.cost;
+    report.secondary_cost = result.secondary_cost;
     report.unit_cost = !task.has_action_costs;
     report.statistics = result.stats;
     report.facts = task.num_facts();

@@ -20,6 +20,7 @@ struct PlanReport {
     search::SearchStatus status = search::SearchStatus::FAILED;
     std::vector<std::string> plan;  // "(move a b)", in order
     long long cost = 0;
+    long long secondary_cost = 0;  // of the plan, among plans of least `cost`
     bool unit_cost = true;
     search::SearchStatistics statistics;
     int facts = 0;
