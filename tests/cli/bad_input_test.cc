@@ -13,6 +13,8 @@ struct BadInput {
     std::string expected;  // "FILE:LINE:COL: error: ..." prefix, FILE relative to data/bad
 };
 
+void PrintTo(const BadInput &b, std::ostream *out) { *out << b.domain << " " << b.problem; }
+
 class BadInputTest : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadInputTest, ExitsTwoAndNamesThePlace) {

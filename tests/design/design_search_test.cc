@@ -127,6 +127,10 @@ struct Setting {
     int max_size;
 };
 
+void PrintTo(const Setting &s, std::ostream *out) {
+    *out << "beta " << s.beta << ", T " << s.horizon << ", max size " << s.max_size;
+}
+
 class AgainstExhaustive : public ::testing::TestWithParam<Setting> {};
 
 TEST_P(AgainstExhaustive, BoundsNeverChangeTheAnswer) {

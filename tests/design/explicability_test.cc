@@ -101,6 +101,9 @@ struct RoadCase {
     std::string robot, human;
 };
 
+// Readable test names in ctest output instead of the parameter's bytes.
+void PrintTo(const RoadCase &c, std::ostream *out) { *out << c.robot << " vs " << c.human; }
+
 class AgainstBruteForce : public ::testing::TestWithParam<RoadCase> {};
 
 TEST_P(AgainstBruteForce, SameCostsAsEnumeratingEverySequence) {

@@ -21,6 +21,8 @@ struct Instance {
     long long expansions = 0;
 };
 
+void PrintTo(const Instance &i, std::ostream *out) { *out << i.domain << "/" << i.problem; }
+
 const std::string IPC_DIR = std::string(ENVDESIGN_SHARED_DIR) + "/benchmarks/ipc/";
 constexpr long long CI_MAX_EXPANSIONS = 12000;
 
