@@ -98,7 +98,7 @@ Graph causal_graph(const ground::GroundTask &task, const std::vector<int> &var_o
 // tasks can have many thousands of variables.
 std::vector<std::vector<int>> strongly_connected_components(const Graph &graph) {
     const int n = static_cast<int>(graph.size());
-    std::vector<int> index(n, -1), low(n, 0), stack;
+    std::vector<int> index(n, -1), low(n, 0), stack_position(n, -1), stack;
     std::vector<bool> on_stack(n, false);
     std::vector<std::vector<int>> sccs;
     int counter = 0;
@@ -109,6 +109,7 @@ std::vector<std::vector<int>> strongly_connected_components(const Graph &graph) 
     std::vector<Frame> frames;
     auto enter = [&](int v) {
         index[v] = low[v] = counter++;
+        stack_position[v] = static_cast<int>(stack.size());
         stack.push_back(v);
         on_stack[v] = true;
         frames.push_back({v, graph[v].begin()});
@@ -129,7 +130,7 @@ std::vector<std::vector<int>> strongly_connected_components(const Graph &graph) 
                 continue;
             }
             if (low[v] == index[v]) {
-                auto start = std::find(stack.begin(), stack.end(), v);
+                auto start = stack.begin() + stack_position[v];
                 std::vector<int> scc(start, stack.end());
                 for (int w : scc)
                     on_stack[w] = false;

@@ -13,13 +13,16 @@ LmCutLandmarks::LmCutLandmarks(const ground::GroundTask &task)
       prop_cost_(relaxed_.num_propositions()),
       precondition_bit_(relaxed_.num_precondition_entries()),
       zone_(relaxed_.num_propositions(), 0) {
-    for (int op = 0; op < relaxed_.num_operators(); ++op) {
-        std::span<const int> pre = relaxed_.preconditions(op);
-        num_preconditions_[op] = static_cast<int>(pre.size());
-        for (int i = 0; i < num_preconditions_[op]; ++i) {
-            std::span<const int> users = relaxed_.precondition_of(pre[i]);
-            int bit = static_cast<int>(std::find(users.begin(), users.end(), op) - users.begin());
-            precondition_bit_[relaxed_.precondition_offset(op) + i] = bit;
+    for (int op = 0; op < relaxed_.num_operators(); ++op)
+        num_preconditions_[op] = static_cast<int>(relaxed_.preconditions(op).size());
+    // One pass over the precondition_of lists; precondition lists are short, so finding
+    // the precondition's index is cheap even when a proposition has many users.
+    for (int prop = 0; prop < relaxed_.num_propositions(); ++prop) {
+        std::span<const int> users = relaxed_.precondition_of(prop);
+        for (int k = 0; k < static_cast<int>(users.size()); ++k) {
+            std::span<const int> pre = relaxed_.preconditions(users[k]);
+            int i = static_cast<int>(std::find(pre.begin(), pre.end(), prop) - pre.begin());
+            precondition_bit_[relaxed_.precondition_offset(users[k]) + i] = k;
         }
     }
     const int *users = relaxed_.precondition_of_items();
