@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <string>
 
 namespace envdesign::search {
@@ -20,6 +21,8 @@ struct Reference {
     std::string domain, problem;
     long long cost, expansions;
 };
+
+void PrintTo(const Reference &ref, std::ostream *out) { *out << ref.domain << "/" << ref.problem; }
 
 const std::string IPC_DIR = std::string(ENVDESIGN_SHARED_DIR) + "/benchmarks/ipc/";
 
