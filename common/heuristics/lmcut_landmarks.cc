@@ -30,7 +30,8 @@ LmCutLandmarks::LmCutLandmarks(const ground::GroundTask &task)
     for (int i = 0; i < relaxed_.num_precondition_entries(); ++i) {
         int op = users[i];
         int begin = eff_offsets[op], end = eff_offsets[op + 1];
-        triggers_.push_back({op, begin < end ? relaxed_.effect_items()[begin] : -1, begin, end});
+        triggers_.push_back(
+            {op, end - begin, begin < end ? relaxed_.effect_items()[begin] : -1, begin});
     }
     mask_offset_.push_back(0);
     for (int prop = 0; prop < relaxed_.num_propositions(); ++prop) {
@@ -239,23 +240,32 @@ void LmCutLandmarks::second_exploration() {
     while (top > 0) {
         const int prop = stack[--top];
         const Trigger *entries = triggers + users_offsets[prop];
-        for (int w = mask_offset[prop], base = 0; w < mask_offset[prop + 1]; ++w, base += 64) {
+        for (int w = mask_offset[prop]; w < mask_offset[prop + 1]; ++w, entries += 64) {
             for (std::uint64_t word = masks[w]; word != 0; word &= word - 1) {
-                const Trigger &t = entries[base + std::countr_zero(word)];
-                if (t.first_effect < 0)
+                const Trigger &t = entries[std::countr_zero(word)];
+                if (t.num_effects == 1) { // the common case, without the loops below
+                    const std::uint32_t z = zone[t.first_effect];
+                    if (z == goal_zone) {
+                        cut[cut_size++] = t.op;
+                    } else if (z != before) {
+                        zone[t.first_effect] = before;
+                        stack[top++] = t.first_effect;
+                    }
                     continue;
-                bool into_goal_zone = zone[t.first_effect] == goal_zone;
-                for (int e = t.effects_begin + 1; e < t.effects_end; ++e)
-                    into_goal_zone |= zone[eff_items[e]] == goal_zone;
+                }
+                const int *eff = eff_items + t.effects_begin;
+                const int *eff_end = eff + t.num_effects;
+                bool into_goal_zone = false;
+                for (const int *e = eff; e != eff_end; ++e)
+                    into_goal_zone |= zone[*e] == goal_zone;
                 if (into_goal_zone) {
                     cut[cut_size++] = t.op;
                     continue;
                 }
-                for (int e = t.effects_begin; e < t.effects_end; ++e) {
-                    const int effect = eff_items[e];
-                    if (zone[effect] != before) {
-                        zone[effect] = before;
-                        stack[top++] = effect;
+                for (const int *e = eff; e != eff_end; ++e) {
+                    if (zone[*e] != before) {
+                        zone[*e] = before;
+                        stack[top++] = *e;
                     }
                 }
             }

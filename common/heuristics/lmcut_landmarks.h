@@ -86,9 +86,9 @@ private:
     // the hot loops reach an operator's first effect with one load instead of three.
     struct Trigger {
         int op;
-        int first_effect;  // -1 if the operator has no effects
+        int num_effects;
+        int first_effect;  // valid if num_effects > 0
         int effects_begin; // into relaxed_.effect_items()
-        int effects_end;
     };
     std::vector<Trigger> triggers_;
     // precondition_bit_[precondition_offset(op) + i]: op's index in the precondition_of
