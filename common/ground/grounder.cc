@@ -200,6 +200,7 @@ GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
         statistics->reachable_actions = static_cast<int>(reachability.actions.size());
     }
     remove_unreachable(task);
+    remove_always_true(task);
     remove_irrelevant(task);
     if (statistics) {
         statistics->relevant_facts = task.num_facts();

@@ -67,6 +67,16 @@ void remove_unreachable(GroundTask &task) {
     restrict(task, reached, applicable);
 }
 
+void remove_always_true(GroundTask &task) {
+    std::vector<bool> keep(task.num_facts(), true);
+    for (FactId f : task.initial_state)
+        keep[f] = false;
+    for (const auto &op : task.operators)
+        for (FactId f : op.del)
+            keep[f] = true;
+    restrict(task, keep, std::vector<bool>(task.num_operators(), true));
+}
+
 void remove_irrelevant(GroundTask &task) {
     std::vector<bool> relevant(task.num_facts(), false), useful(task.num_operators(), false);
     for (FactId f : task.goal)

@@ -10,6 +10,10 @@ namespace envdesign::ground {
 // complementary facts, which the lifted exploration did not see.
 void remove_unreachable(GroundTask &task);
 
+// Drops facts that are true initially and that no operator deletes: they hold in every
+// reachable state, so as preconditions and goals they say nothing (grid's open doors).
+void remove_always_true(GroundTask &task);
+
 // Drops facts that no goal needs, directly or through the preconditions of an operator that
 // changes a needed fact, and the operators left without effects. Operators kept keep all
 // their preconditions, so a plan of the smaller task is a plan of the original.
