@@ -1,0 +1,59 @@
+#include "arrivals/drift_detector.h"
+
+namespace envdesign::arrivals {
+
+DriftDetector::DriftDetector(DriftConfig config, Distribution reference)
+    : config_(config), reference_(std::move(reference)) {}
+
+bool DriftDetector::observe(const Distribution &estimate, double samples, double now) {
+    last_tv_ = total_variation(reference_, estimate);
+    ++arrivals_since_request_;
+    if (state_ == DriftState::PENDING) {
+        if (now - requested_at_ < config_.answer_timeout_s)
+            return false;
+        ++timeouts_;
+        state_ = DriftState::ARMED;
+    }
+    if (state_ == DriftState::HELD && last_tv_ < config_.rearm_threshold)
+        state_ = DriftState::ARMED;
+    bool drifted = samples >= config_.min_samples && last_tv_ >= config_.threshold &&
+                   (!requested_before_ || arrivals_since_request_ >= config_.holdoff_arrivals);
+    if (!drifted)
+        return false;
+    if (state_ == DriftState::HELD && now - requested_at_ < config_.retry_s)
+        return false;
+    return request(now);
+}
+
+bool DriftDetector::force(double now) { return state_ != DriftState::PENDING && request(now); }
+
+bool DriftDetector::request(double now) {
+    state_ = DriftState::PENDING;
+    requested_at_ = now;
+    arrivals_since_request_ = 0;
+    requested_before_ = true;
+    ++requests_;
+    return true;
+}
+
+void DriftDetector::answered(const Distribution &reference, const Distribution &estimate) {
+    reference_ = reference;
+    last_tv_ = total_variation(reference_, estimate);
+    // With no arrivals yet there is nothing the design could have missed.
+    bool close = estimate.empty() || last_tv_ < config_.rearm_threshold;
+    state_ = close ? DriftState::ARMED : DriftState::HELD;
+}
+
+const char *to_string(DriftState state) {
+    switch (state) {
+    case DriftState::ARMED:
+        return "armed";
+    case DriftState::PENDING:
+        return "pending";
+    case DriftState::HELD:
+        return "held";
+    }
+    return "?";
+}
+
+} // namespace envdesign::arrivals

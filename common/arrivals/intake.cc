@@ -1,0 +1,127 @@
+#include "arrivals/intake.h"
+
+#include <algorithm>
+
+namespace envdesign::arrivals {
+namespace {
+
+bool good_name(const std::string &name, std::size_t max_length) {
+    if (name.size() > max_length)
+        return false;
+    return std::none_of(name.begin(), name.end(), [](char c) {
+        auto u = static_cast<unsigned char>(c);
+        return u < 0x20 || u == 0x7f;
+    });
+}
+
+} // namespace
+
+const char *to_string(Verdict verdict) {
+    switch (verdict) {
+    case Verdict::ACCEPTED:
+        return "accepted";
+    case Verdict::UNKNOWN_PROBLEM:
+        return "unknown_problem";
+    case Verdict::EMPTY_TASK:
+        return "empty_task";
+    case Verdict::BAD_NAME:
+        return "bad_name";
+    case Verdict::TOO_LARGE:
+        return "too_large";
+    case Verdict::BAD_TIMESTAMP:
+        return "bad_timestamp";
+    case Verdict::BAD_SEQUENCE:
+        return "bad_sequence";
+    case Verdict::DUPLICATE:
+        return "duplicate";
+    case Verdict::TOO_MANY_SITES:
+        return "too_many_sites";
+    case Verdict::RATE_LIMITED:
+        return "rate_limited";
+    }
+    return "?";
+}
+
+Verdict ArrivalIntake::check(const Arrival &arrival, bool problem_known, double now,
+                             int64_t now_utime) {
+    ++counters_.received;
+    Verdict verdict = check_fields(arrival, problem_known, now_utime);
+    if (verdict == Verdict::ACCEPTED) {
+        auto key = std::make_pair(arrival.problem_id, arrival.site);
+        auto it = sites_.find(key);
+        if (it == sites_.end() && sites_.size() >= config_.max_sites) {
+            verdict = Verdict::TOO_MANY_SITES;
+        } else {
+            if (it == sites_.end())
+                it = sites_.emplace(key, Site{0, config_.burst, now}).first;
+            verdict = check_sequence(it->second, arrival.sequence);
+            if (verdict == Verdict::ACCEPTED && !take_token(it->second, now))
+                verdict = Verdict::RATE_LIMITED;
+        }
+    }
+    ++counters_.by_verdict[static_cast<int>(verdict)];
+    return verdict;
+}
+
+Verdict ArrivalIntake::check_fields(const Arrival &a, bool problem_known, int64_t now_utime) const {
+    if (!problem_known)
+        return Verdict::UNKNOWN_PROBLEM;
+    if (a.task.empty())
+        return Verdict::EMPTY_TASK;
+    std::size_t n = config_.max_name_length;
+    if (!good_name(a.task, n) || !good_name(a.site, n) || !good_name(a.problem_id, n))
+        return Verdict::BAD_NAME;
+    if (a.problem.size() + a.human_problem.size() > config_.max_problem_bytes)
+        return Verdict::TOO_LARGE;
+    // In double seconds, so that absurd values (INT64_MIN, INT64_MAX) cannot overflow.
+    double ahead_s = (static_cast<double>(a.utime) - static_cast<double>(now_utime)) * 1e-6;
+    if (a.utime <= 0 || ahead_s > config_.max_future_s || -ahead_s > config_.max_age_s)
+        return Verdict::BAD_TIMESTAMP;
+    if (a.sequence <= 0)
+        return Verdict::BAD_SEQUENCE;
+    return Verdict::ACCEPTED;
+}
+
+Verdict ArrivalIntake::check_sequence(Site &site, int64_t sequence) {
+    if (site.last_sequence == 0) { // the first arrival seen from this site: no gap to count
+        site.last_sequence = sequence;
+        return Verdict::ACCEPTED;
+    }
+    if (sequence == 1 && site.last_sequence > 1) {
+        ++counters_.site_restarts;
+        site.last_sequence = 1;
+        return Verdict::ACCEPTED;
+    }
+    if (sequence <= site.last_sequence)
+        return Verdict::DUPLICATE;
+    counters_.sequence_gaps += sequence - site.last_sequence - 1;
+    site.last_sequence = sequence;
+    return Verdict::ACCEPTED;
+}
+
+bool ArrivalIntake::take_token(Site &site, double now) {
+    if (config_.max_rate <= 0)
+        return true;
+    site.tokens =
+        std::min(config_.burst, site.tokens + (now - site.refilled_at) * config_.max_rate);
+    site.refilled_at = now;
+    if (site.tokens < 1)
+        return false;
+    site.tokens -= 1;
+    return true;
+}
+
+LogThrottle::Decision LogThrottle::should_log(Verdict verdict, double now) {
+    Kind &k = kinds_[static_cast<int>(verdict)];
+    ++k.seen;
+    if (k.seen <= first_ || now - k.logged_at >= interval_s_) {
+        Decision d{true, k.suppressed};
+        k.suppressed = 0;
+        k.logged_at = now;
+        return d;
+    }
+    ++k.suppressed;
+    return {};
+}
+
+} // namespace envdesign::arrivals

@@ -1,0 +1,124 @@
+#include "arrivals/tracker.h"
+
+namespace envdesign::arrivals {
+
+const char *to_string(Reason reason) { return reason == Reason::NEW_TASK ? "new_task" : "drift"; }
+
+ArrivalTracker::ArrivalTracker(TrackerConfig config) : config_(config), intake_(config.intake) {}
+
+void ArrivalTracker::add_problem(const std::string &id, const Distribution &reference) {
+    Problem p{id,
+              {},
+              {},
+              {},
+              {},
+              DistributionEstimator(config_.estimator),
+              DriftDetector(config_.drift, reference),
+              {}};
+    for (const auto &[task, probability] : reference)
+        p.tasks.insert(task);
+    p.status.problem_id = id;
+    p.status.reference = reference;
+    problems_.insert_or_assign(id, std::move(p));
+}
+
+Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_utime) {
+    auto it = problems_.find(arrival.problem_id);
+    Outcome out;
+    out.verdict = intake_.check(arrival, it != problems_.end(), now, now_utime);
+    if (out.verdict != Verdict::ACCEPTED)
+        return out;
+    Problem &p = it->second;
+    out.use = classify(p, arrival);
+    if (out.use == Use::UNKNOWN_TASK)
+        return out;
+    p.estimator.add(arrival.task);
+    ++p.status.estimated;
+    Distribution estimate = p.estimator.estimate();
+    bool drifted = p.detector.observe(estimate, p.estimator.effective_samples(), now);
+    if (out.use == Use::NEW_TASK && !drifted && p.detector.state() != DriftState::PENDING)
+        drifted = p.detector.force(now);
+    if (drifted)
+        out.request = make_request(p, out.use == Use::NEW_TASK ? Reason::NEW_TASK : Reason::DRIFT);
+    return out;
+}
+
+Use ArrivalTracker::classify(Problem &p, const Arrival &arrival) {
+    const std::string &task = arrival.task;
+    if (p.tasks.count(task) || p.proposed.count(task))
+        return Use::ESTIMATED;
+    if (arrival.problem.empty() || p.refused.count(task)) {
+        ++p.status.unknown_task;
+        ++p.status.unknown_task_names[task];
+        return Use::UNKNOWN_TASK;
+    }
+    p.proposed[task] = {task, arrival.problem, arrival.human_problem};
+    ++p.status.new_tasks;
+    return Use::NEW_TASK;
+}
+
+Request ArrivalTracker::make_request(Problem &p, Reason reason) {
+    Request r;
+    r.problem_id = p.id;
+    r.reason = reason;
+    r.estimate = p.estimator.estimate();
+    r.reference = p.detector.reference();
+    r.distance = total_variation(r.reference, r.estimate);
+    r.samples = p.estimator.effective_samples();
+    for (const auto &[name, task] : p.proposed) {
+        r.new_tasks.push_back(task);
+        p.sent.insert(name);
+    }
+    return r;
+}
+
+std::optional<Request> ArrivalTracker::answered(const std::string &id,
+                                                const Distribution &reference, double now) {
+    auto it = problems_.find(id);
+    if (it == problems_.end())
+        return std::nullopt;
+    Problem &p = it->second;
+    p.tasks.clear();
+    for (const auto &[task, probability] : reference)
+        p.tasks.insert(task);
+    // A proposed task that was sent and is not in the answer was refused.
+    for (auto t = p.proposed.begin(); t != p.proposed.end();) {
+        bool done = p.tasks.count(t->first) || p.sent.count(t->first);
+        if (done && !p.tasks.count(t->first)) {
+            p.refused.insert(t->first);
+            ++p.status.refused_tasks;
+        }
+        if (done)
+            p.sent.erase(t->first);
+        t = done ? p.proposed.erase(t) : std::next(t);
+    }
+    p.detector.answered(reference, p.estimator.estimate());
+    if (p.proposed.empty() || !p.detector.force(now))
+        return std::nullopt;
+    return make_request(p, Reason::NEW_TASK);
+}
+
+std::optional<ProblemStatus> ArrivalTracker::status(const std::string &id) const {
+    auto it = problems_.find(id);
+    if (it == problems_.end())
+        return std::nullopt;
+    const Problem &p = it->second;
+    ProblemStatus s = p.status;
+    s.estimate = p.estimator.estimate();
+    s.reference = p.detector.reference();
+    s.samples = p.estimator.effective_samples();
+    s.distance = total_variation(s.reference, s.estimate);
+    s.state = p.detector.state();
+    s.requests = p.detector.requests();
+    s.timeouts = p.detector.timeouts();
+    return s;
+}
+
+std::vector<std::string> ArrivalTracker::problem_ids() const {
+    std::vector<std::string> ids;
+    for (const auto &[id, p] : problems_)
+        ids.push_back(id);
+    return ids;
+}
+
+} // namespace envdesign::arrivals

@@ -1,0 +1,127 @@
+#pragma once
+// The bridge's state, transport-free: the design problems it tracks, an estimator and a
+// drift detector per problem, the intake checks, and the re-evaluation requests that come
+// out of them (arrival.h has the overview).
+//
+// Per problem, an accepted arrival is
+//   - ESTIMATED when its task is one of the problem's (it enters the estimate);
+//   - NEW_TASK when its task is not, but it carries the task's problem text: the task is
+//     taken in provisionally (it enters the estimate) and a re-evaluation that adds it is
+//     requested at once; if the answer comes back without the task, the coordinator refused
+//     it and the task counts as unknown from then on;
+//   - UNKNOWN_TASK otherwise: counted (per task name), not estimated.
+//
+// Not thread-safe: the bridge serialises calls.
+//
+// Example:
+//   ArrivalTracker tracker(config);
+//   tracker.add_problem("restaurant", {{"serve-g1", 0.9}, {"serve-g2", 0.1}});
+//   Outcome o = tracker.receive(arrival, now, now_utime);
+//   if (o.request) publish(*o.request);
+//   ... on the coordinator's answer: tracker.answered("restaurant", new_d, now);
+
+#include "arrivals/drift_detector.h"
+#include "arrivals/estimator.h"
+#include "arrivals/intake.h"
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace envdesign::arrivals {
+
+struct TrackerConfig {
+    EstimatorConfig estimator;
+    DriftConfig drift;
+    IntakeConfig intake;
+};
+
+struct NewTask {
+    std::string name;
+    std::string problem;       // PDDL problem text (robot's model)
+    std::string human_problem; // empty: `problem`
+};
+
+enum class Reason { DRIFT, NEW_TASK };
+const char *to_string(Reason reason);
+
+// Asks the coordinator to re-evaluate one design problem for a new D.
+struct Request {
+    std::string problem_id;
+    Reason reason = Reason::DRIFT;
+    Distribution estimate;          // the D to evaluate (tasks absent: probability 0)
+    Distribution reference;         // the D of the design in force
+    double distance = 0;            // TV(reference, estimate)
+    double samples = 0;             // effective samples behind the estimate
+    std::vector<NewTask> new_tasks; // tasks to add to the problem first
+};
+
+enum class Use { REJECTED, ESTIMATED, NEW_TASK, UNKNOWN_TASK };
+
+struct Outcome {
+    Verdict verdict = Verdict::ACCEPTED;
+    Use use = Use::REJECTED;
+    std::optional<Request> request;
+};
+
+// One design problem's view: what is published on the bus as its estimate.
+struct ProblemStatus {
+    std::string problem_id;
+    Distribution estimate;
+    Distribution reference;
+    double samples = 0;
+    double distance = 0;
+    DriftState state = DriftState::ARMED;
+    long long estimated = 0;    // arrivals in the estimate, ever
+    long long unknown_task = 0; // arrivals of tasks the problem does not have
+    long long new_tasks = 0;    // new tasks taken in
+    long long refused_tasks = 0;
+    long long requests = 0;
+    long long timeouts = 0;
+    std::map<std::string, long long> unknown_task_names;
+};
+
+class ArrivalTracker {
+public:
+    explicit ArrivalTracker(TrackerConfig config);
+
+    // Tracks a design problem whose design in force was made for `reference` (its tasks are
+    // the problem's tasks). Replaces an earlier one with the same id.
+    void add_problem(const std::string &id, const Distribution &reference);
+    bool tracks(const std::string &id) const { return problems_.count(id) > 0; }
+
+    // `now`: seconds on a monotonic clock; `now_utime`: wall clock, microseconds since epoch.
+    Outcome receive(const Arrival &arrival, double now, int64_t now_utime);
+
+    // A design for problem `id` is now in force, made for `reference` (its tasks are the
+    // problem's tasks from now on). Returns a request when new tasks are still waiting.
+    std::optional<Request> answered(const std::string &id, const Distribution &reference,
+                                    double now);
+
+    std::optional<ProblemStatus> status(const std::string &id) const;
+    std::vector<std::string> problem_ids() const;
+    const IntakeCounters &counters() const { return intake_.counters(); }
+
+private:
+    struct Problem {
+        std::string id;
+        std::set<std::string> tasks;             // the problem's tasks
+        std::map<std::string, NewTask> proposed; // new tasks not yet answered
+        std::set<std::string> sent;              // proposed tasks already in a request
+        std::set<std::string> refused;
+        DistributionEstimator estimator;
+        DriftDetector detector;
+        ProblemStatus status;
+    };
+
+    Use classify(Problem &p, const Arrival &arrival);
+    Request make_request(Problem &p, Reason reason);
+
+    TrackerConfig config_;
+    ArrivalIntake intake_;
+    std::map<std::string, Problem> problems_;
+};
+
+} // namespace envdesign::arrivals
