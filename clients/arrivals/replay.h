@@ -1,0 +1,50 @@
+#pragma once
+// Replay files for `envdesign-arrivals --replay FILE.csv`: one arrival a line.
+//
+//   # comments and blank lines are skipped
+//   task,site,problem_id,utime,sequence,problem_file,human_problem_file
+//   serve-g1
+//   serve-g2,dock-2
+//   clean-g3,,,,,clean-g3.pddl
+//
+// The first other line is the header: it names the columns, in any order; only `task` is
+// required. An empty cell takes the default: site and problem_id from the command line,
+// utime the time of publishing, sequence the next number of that (problem_id, site), no
+// problem. utime and sequence cells are taken as written, absurd values included (that is
+// how tests send bad samples). problem_file and human_problem_file are paths relative to
+// the replay file; their text is read when the file is loaded (a new task's PDDL problem).
+// Cells are not quoted; a value cannot contain a comma.
+
+#include "arrivals/arrival.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envdesign::arrivals_client {
+
+struct ReplayRow {
+    int line = 0;
+    std::string task;
+    std::optional<std::string> site, problem_id;
+    std::optional<int64_t> utime, sequence;
+    std::string problem, human_problem; // texts, read from the files named
+};
+
+// Throws pddl::ParseError "FILE:LINE:COL: error: ..." for a file that cannot be read, a
+// header without `task`, an unknown column, a row with too many cells, a number that is not
+// one, or a problem file that cannot be read.
+std::vector<ReplayRow> read_replay_file(const std::string &path);
+
+// Fills the defaults of `row`; `sequences` numbers each (problem_id, site) from 1.
+class ReplayNumbering {
+public:
+    arrivals::Arrival arrival(const ReplayRow &row, const std::string &problem_id,
+                              const std::string &site, int64_t now_utime);
+
+private:
+    std::map<std::pair<std::string, std::string>, int64_t> last_; // (problem_id, site)
+};
+
+} // namespace envdesign::arrivals_client
