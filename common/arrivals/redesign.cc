@@ -1,0 +1,209 @@
+#include "arrivals/redesign.h"
+
+#include "design/compilation.h"
+#include "design/objective.h"
+#include "ground/grounder.h"
+#include "pddl/parser.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace envdesign::arrivals {
+namespace {
+
+using design::Configuration;
+using design::DesignProblem;
+
+constexpr double NOT_KNOWN = std::numeric_limits<double>::quiet_NaN();
+
+// What a spec load checks for its own tasks (spec_checks.h): the pair compiles and grounds,
+// and every modification still compiles on it.
+void check_new_task(const DesignProblem &problem, int task) {
+    design::ModelPair models = design::base_models(problem, task);
+    design::CompiledTask compiled = design::compile_explicable(models);
+    ground::ground(compiled.domain, compiled.problem);
+    ground::ground(models.human_domain, models.human_problem);
+    ground::ground(models.robot_domain, models.robot_problem);
+    for (int m = 0; m < static_cast<int>(problem.modifications.size()); ++m)
+        design::compile_explicable(design::configured_models(problem, {m}, task));
+}
+
+std::string names(const std::vector<std::string> &list) {
+    std::string out = "{";
+    for (const auto &n : list)
+        out += (out.size() > 1 ? ", " : "") + n;
+    return out + "}";
+}
+
+std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", x);
+    return text;
+}
+
+} // namespace
+
+Redesigner::Redesigner(DesignProblem problem, RedesignOptions options)
+    : problem_(std::make_unique<DesignProblem>(std::move(problem))), options_(options),
+      local_(std::make_unique<design::LocalEvaluator>(*problem_, options.workers, options.planner)),
+      stored_(std::make_unique<StoredEvaluator>(*problem_, *local_)) {}
+
+Distribution Redesigner::distribution() const {
+    Distribution d;
+    for (const auto &t : problem_->tasks)
+        d[t.name] = t.probability;
+    return d;
+}
+
+std::optional<std::string> Redesigner::add_task(const NewTask &task) {
+    std::string file = "new-task:" + task.name;
+    design::DesignTask t;
+    t.name = task.name;
+    t.probability = 0;
+    try {
+        const std::string &human = task.human_problem.empty() ? task.problem : task.human_problem;
+        t.robot_problem =
+            pddl::parse_problem(pddl::read_sexpr(task.problem, file), file, problem_->robot_domain);
+        t.human_problem = pddl::parse_problem(pddl::read_sexpr(human, file + " (human)"),
+                                              file + " (human)", problem_->human_domain);
+        problem_->tasks.push_back(std::move(t));
+        check_new_task(*problem_, static_cast<int>(problem_->tasks.size()) - 1);
+    } catch (const pddl::ParseError &e) {
+        if (!problem_->tasks.empty() && problem_->tasks.back().name == task.name)
+            problem_->tasks.pop_back();
+        return std::string(e.what());
+    }
+    return std::nullopt;
+}
+
+void Redesigner::remove_task(const std::string &name) {
+    std::erase_if(problem_->tasks, [&](const design::DesignTask &t) { return t.name == name; });
+    stored_->forget_task(name);
+}
+
+void Redesigner::set_probabilities(const Distribution &d) {
+    double total = 0;
+    for (const auto &t : problem_->tasks) {
+        auto it = d.find(t.name);
+        total += it == d.end() ? 0 : it->second;
+    }
+    if (!(total > 0))
+        return; // nothing to weigh by: keep the current probabilities
+    for (auto &t : problem_->tasks) {
+        auto it = d.find(t.name);
+        t.probability = it == d.end() ? 0 : it->second / total;
+    }
+}
+
+design::DesignResult Redesigner::search() {
+    design::DesignSearchOptions options;
+    options.max_design_size =
+        options_.max_design_size >= 0 ? options_.max_design_size : problem_->max_design_size;
+    options.deadline = design::Deadline::in(options_.time_limit_s >= 0 ? options_.time_limit_s
+                                                                       : problem_->time_limit_s);
+    options.batch_size = 4 * std::max(1, options_.workers);
+    design::EvaluatorCounters before = stored_->counters();
+    design::DesignResult result = design::search_design(*problem_, *stored_, options);
+    // The evaluator's counters run over every search; report this one's.
+    auto &c = result.counters.evaluator;
+    c.task_evaluations -= before.task_evaluations;
+    c.planner_runs -= before.planner_runs;
+    c.cache_hits -= before.cache_hits;
+    c.groundings_skipped -= before.groundings_skipped;
+    c.planner_seconds -= before.planner_seconds;
+    return result;
+}
+
+Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> &new_tasks) {
+    auto start = std::chrono::steady_clock::now();
+    long long stored_before = stored_->stored_answers();
+    Distribution d_before = distribution();
+    std::vector<std::string> added, refused;
+    for (const auto &task : new_tasks) {
+        if (d_before.count(task.name))
+            continue; // known already (a repeat of an earlier request)
+        if (auto why = add_task(task))
+            refused.push_back(task.name + ": " + *why);
+        else
+            added.push_back(task.name);
+    }
+    set_probabilities(d);
+    Redesign out;
+    try {
+        out.result = search();
+    } catch (const pddl::ParseError &e) {
+        if (added.empty())
+            throw;
+        // A modified model of a new task does not ground: take the new tasks out again.
+        for (const auto &name : added) {
+            refused.push_back(name + ": " + e.what());
+            remove_task(name);
+        }
+        added.clear();
+        set_probabilities(d);
+        out.result = search();
+    }
+    out.change = describe(out, d_before, added, refused);
+    out.change.stored_answers = stored_->stored_answers() - stored_before;
+    out.change.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (out.result.best)
+        current_ = out.result.best;
+    return out;
+}
+
+double Redesigner::objective_of(const Configuration &configuration) const {
+    std::vector<design::TaskExplicability> tasks;
+    for (const auto &t : problem_->tasks) {
+        const design::TaskExplicability *e = stored_->find(configuration, t.name);
+        if (!e)
+            return NOT_KNOWN;
+        tasks.push_back(*e);
+    }
+    return design::objective_of(*problem_, design::design_cost(*problem_, configuration), tasks)
+        .value;
+}
+
+DesignChange Redesigner::describe(const Redesign &redesign, const Distribution &d_before,
+                                  const std::vector<std::string> &added,
+                                  const std::vector<std::string> &refused) const {
+    DesignChange c;
+    c.d_before = d_before;
+    c.d_after = distribution();
+    c.distance = total_variation(c.d_before, c.d_after);
+    c.added_tasks = added;
+    c.refused_tasks = refused;
+    c.planner_runs = redesign.result.counters.evaluator.planner_runs;
+    c.evaluated = redesign.result.counters.configurations_evaluated;
+    c.objective_before = current_ ? objective_of(current_->ranked.configuration) : NOT_KNOWN;
+    c.objective_after = redesign.result.best ? redesign.result.best->objective.value : NOT_KNOWN;
+    if (current_)
+        c.before = current_->ranked.configuration;
+    if (redesign.result.best)
+        c.after = redesign.result.best->ranked.configuration;
+    c.before_names = design::design_names(*problem_, c.before);
+    c.after_names = design::design_names(*problem_, c.after);
+    c.changed = current_.has_value() && redesign.result.best && c.before != c.after;
+    std::string why = "D " + to_string(c.d_before) + " -> " + to_string(c.d_after) + " (TV " +
+                      number(c.distance) + ")";
+    if (!added.empty())
+        why += ", new tasks " + names(added);
+    if (!refused.empty())
+        why += ", refused " + std::to_string(refused.size()) + " new task(s)";
+    if (!redesign.result.best)
+        c.explanation = "no design evaluated in time; " + why;
+    else if (!current_)
+        c.explanation = "design " + names(c.after_names) + " (objective " +
+                        number(c.objective_after) + ") for " + to_string(c.d_after);
+    else if (c.changed)
+        c.explanation = "design " + names(c.before_names) + " -> " + names(c.after_names) +
+                        ": under the new D it costs " + number(c.objective_before) +
+                        ", the new design " + number(c.objective_after) + "; " + why;
+    else
+        c.explanation = "design " + names(c.after_names) + " unchanged (objective " +
+                        number(c.objective_after) + "); " + why;
+    return c;
+}
+
+} // namespace envdesign::arrivals

@@ -1,0 +1,102 @@
+#pragma once
+// Re-evaluating a design problem for a new task distribution D, reusing every evaluation
+// made before (stored_evaluator.h), and saying what changed and why.
+//
+// A Redesigner owns one design problem, an in-process LocalEvaluator (its content-addressed
+// PlanCache kept across searches) and a StoredEvaluator in front of it. Each redesign(D)
+// sets the tasks' probabilities to D and runs the exact design search again: configurations
+// whose tasks are all stored cost nothing; only configurations never evaluated (skipped or
+// abandoned by the bounds under the old D, or cut short by a time limit) and new tasks go
+// to the planners, and even those mostly hit the plan cache.
+//
+// New tasks (an arrival brought a task's PDDL problem) are parsed against the problem's
+// domains and added before the search; one that fails to parse, or whose models do not
+// ground during the search, is taken out again and reported as refused.
+//
+// Example:
+//   Redesigner r(design::load_design_problem("spec.textproto"), {});
+//   Redesign first = r.redesign(r.distribution(), {});        // the spec's D
+//   Redesign next = r.redesign({{"serve-g1", 0.1}, {"serve-g2", 0.9}}, {});
+//   next.change.changed, next.change.explanation, next.change.planner_runs (0: re-weighting)
+//
+// Not thread-safe; the problem must not be changed by anything else.
+
+#include "arrivals/distribution.h"
+#include "arrivals/stored_evaluator.h"
+#include "arrivals/tracker.h"
+#include "design/design_search.h"
+#include "design/local_evaluator.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envdesign::arrivals {
+
+struct RedesignOptions {
+    int workers = 1;                  // planner threads
+    planning::PlannerOptions planner; // heuristic, limits
+    int max_design_size = -1;         // < 0: the spec's
+    double time_limit_s = -1;         // per redesign; < 0: the spec's; 0: none
+};
+
+struct DesignChange {
+    bool changed = false;         // the design differs from the previous one
+    design::Configuration before; // the previous design (empty on the first run)
+    design::Configuration after;
+    std::vector<std::string> before_names, after_names;
+    Distribution d_before, d_after; // the probabilities before and after
+    double distance = 0;            // TV(d_before, d_after)
+    // The previous design's objective under the new D (NaN on the first run or when its
+    // new tasks were never evaluated under it), beside the new design's.
+    double objective_before;
+    double objective_after;
+    std::vector<std::string> added_tasks, refused_tasks;
+    long long planner_runs = 0;   // in this redesign
+    long long stored_answers = 0; // configurations answered from the store
+    long long evaluated = 0;      // configurations evaluated (stored or not)
+    double seconds = 0;
+    std::string explanation; // one line: what changed and why
+};
+
+struct Redesign {
+    design::DesignResult result; // counters are this redesign's own
+    DesignChange change;
+};
+
+class Redesigner {
+public:
+    Redesigner(design::DesignProblem problem, RedesignOptions options);
+
+    const design::DesignProblem &problem() const { return *problem_; }
+    Distribution distribution() const; // the tasks' probabilities now
+
+    // Adds `new_tasks`, sets the probabilities to `d` (tasks `d` leaves out: 0; names the
+    // problem does not have are ignored; if `d` gives every task 0, the current
+    // probabilities stay) and searches. Throws only what the search throws besides bad
+    // models of new tasks (e.g. a ParseError from a modification of the original tasks).
+    Redesign redesign(const Distribution &d, const std::vector<NewTask> &new_tasks);
+
+    const std::optional<design::EvaluatedDesign> &current() const { return current_; }
+    const StoredEvaluator &store() const { return *stored_; }
+
+private:
+    // Parses and appends a new task; the refusal message if it cannot.
+    std::optional<std::string> add_task(const NewTask &task);
+    void remove_task(const std::string &name);
+    void set_probabilities(const Distribution &d);
+    design::DesignResult search();
+    double objective_of(const design::Configuration &configuration) const;
+    DesignChange describe(const Redesign &redesign, const Distribution &d_before,
+                          const std::vector<std::string> &added,
+                          const std::vector<std::string> &refused) const;
+
+    std::unique_ptr<design::DesignProblem> problem_; // stable address: the evaluators hold it
+    RedesignOptions options_;
+    std::unique_ptr<design::LocalEvaluator> local_;
+    std::unique_ptr<StoredEvaluator> stored_;
+    std::optional<design::EvaluatedDesign> current_;
+};
+
+} // namespace envdesign::arrivals

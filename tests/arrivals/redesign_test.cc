@@ -1,0 +1,135 @@
+// Re-evaluation for a new D: the same designs as fresh searches, by re-weighting stored
+// evaluations (no planner runs once they are stored), new tasks added or refused.
+
+#include "arrivals/redesign.h"
+
+#include "design/design_spec.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace envdesign::arrivals {
+namespace {
+
+const std::string DATA = ENVDESIGN_ARRIVALS_DATA;
+const std::string SPEC = DATA + "/restaurant-drift.textproto";
+const std::string RESTAURANT = DATA + "/../../../examples/restaurant/";
+
+Distribution g1(double p) { return {{"serve-g1", p}, {"serve-g2", 1 - p}}; }
+
+std::string read(const std::string &path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A fresh search (new evaluator, empty caches) of the spec with D = `d`.
+design::DesignResult fresh(const Distribution &d) {
+    design::DesignProblem problem = design::load_design_problem(SPEC);
+    for (auto &t : problem.tasks)
+        t.probability = d.at(t.name);
+    design::LocalEvaluator evaluator(problem, 1);
+    return design::search_design(problem, evaluator, {});
+}
+
+std::vector<std::string> names(const Redesigner &r, const design::DesignResult &result) {
+    return design::design_names(r.problem(), result.best->ranked.configuration);
+}
+
+TEST(Redesign, FirstRunIsTheSpecsDesign) {
+    Redesigner r(design::load_design_problem(SPEC), {});
+    Redesign first = r.redesign(r.distribution(), {});
+    ASSERT_TRUE(first.result.best);
+    EXPECT_TRUE(first.result.optimal);
+    EXPECT_EQ(names(r, first.result), std::vector<std::string>{});
+    EXPECT_NEAR(first.result.best->objective.value, 38.143006484, 1e-6);
+    EXPECT_FALSE(first.change.changed);
+    EXPECT_TRUE(std::isnan(first.change.objective_before));
+    EXPECT_GT(first.change.planner_runs, 0);
+}
+
+// 0.9 -> 0.1 flips the design to barrier-00-01, as a fresh search says; the old design
+// costs more under the new D. Going back and forth again costs no planner run.
+TEST(Redesign, DriftFlipsTheDesignThenReweightingIsFree) {
+    Redesigner r(design::load_design_problem(SPEC), {});
+    r.redesign(g1(0.9), {});
+    Redesign flip = r.redesign(g1(0.1), {});
+    EXPECT_TRUE(flip.change.changed);
+    EXPECT_EQ(flip.change.after_names, std::vector<std::string>{"barrier-00-01"});
+    EXPECT_EQ(flip.change.before_names, std::vector<std::string>{});
+    EXPECT_NEAR(flip.change.distance, 0.8, 1e-12);
+    EXPECT_GT(flip.change.objective_before, flip.change.objective_after);
+    EXPECT_NE(flip.change.explanation.find("{} -> {barrier-00-01}"), std::string::npos)
+        << flip.change.explanation;
+    design::DesignResult expected = fresh(g1(0.1));
+    EXPECT_EQ(flip.result.best->ranked.configuration, expected.best->ranked.configuration);
+    EXPECT_NEAR(flip.result.best->objective.value, expected.best->objective.value, 1e-9);
+
+    for (double p : {0.9, 0.1, 0.9, 0.1}) {
+        Redesign again = r.redesign(g1(p), {});
+        EXPECT_EQ(again.change.planner_runs, 0) << p;
+        EXPECT_EQ(again.result.counters.evaluator.task_evaluations, 0) << p;
+        EXPECT_EQ(again.change.stored_answers, again.result.counters.configurations_evaluated +
+                                                   again.result.counters.configurations_abandoned)
+            << p;
+        EXPECT_TRUE(again.change.changed) << p;
+    }
+}
+
+// Re-weighting is exact: for D along the way, the design and objective of a fresh search.
+TEST(Redesign, SameAsFreshSearchesAlongTheDrift) {
+    Redesigner r(design::load_design_problem(SPEC), {});
+    for (double p : {0.9, 0.8, 0.75, 0.7, 0.5, 0.3, 0.1, 0.0, 1.0, 0.85}) {
+        Redesign got = r.redesign(g1(p), {});
+        design::DesignResult expected = fresh(g1(p));
+        ASSERT_TRUE(got.result.best && expected.best);
+        EXPECT_EQ(got.result.best->ranked.configuration, expected.best->ranked.configuration) << p;
+        EXPECT_NEAR(got.result.best->objective.value, expected.best->objective.value, 1e-9) << p;
+        EXPECT_EQ(got.result.optimal, expected.optimal) << p;
+    }
+}
+
+// A new task with its problem: added, evaluated, weighed. Here a third booth task that is
+// serve-g2 again under another name, so the answer is known: with D = 0.9 on it the design
+// is the one for serve-g2-heavy D.
+TEST(Redesign, NewTaskIsAddedAndEvaluated) {
+    Redesigner r(design::load_design_problem(SPEC), {});
+    r.redesign(r.distribution(), {});
+    NewTask task{"serve-g2-again", read(RESTAURANT + "serve-g2.pddl"),
+                 read(RESTAURANT + "serve-g2-human.pddl")};
+    Redesign got =
+        r.redesign({{"serve-g1", 0.1}, {"serve-g2", 0.0}, {"serve-g2-again", 0.9}}, {task});
+    EXPECT_EQ(got.change.added_tasks, std::vector<std::string>{"serve-g2-again"});
+    EXPECT_TRUE(got.change.refused_tasks.empty());
+    ASSERT_EQ(r.problem().tasks.size(), 3u);
+    EXPECT_EQ(got.change.after_names, std::vector<std::string>{"barrier-00-01"});
+    design::DesignResult expected = fresh(g1(0.1));
+    EXPECT_NEAR(got.result.best->objective.value, expected.best->objective.value, 1e-9);
+    // The new task was evaluated; its models equal serve-g2's, so the content-addressed
+    // plan cache answers for it.
+    EXPECT_GT(got.result.counters.evaluator.task_evaluations, 0);
+    EXPECT_GT(got.result.counters.evaluator.cache_hits, 0);
+}
+
+// Bad PDDL for a new task: refused with the parser's message; the search still runs.
+TEST(Redesign, BadNewTaskIsRefused) {
+    Redesigner r(design::load_design_problem(SPEC), {});
+    r.redesign(r.distribution(), {});
+    Redesign got = r.redesign(g1(0.1), {{"broken", "(define (problem x) (:domain restaurant)", ""},
+                                        {"ghost",
+                                         "(define (problem y) (:domain restaurant) "
+                                         "(:objects nowhere - cell) (:init) "
+                                         "(:goal (robot-at nowhere)))",
+                                         ""}});
+    EXPECT_EQ(got.change.refused_tasks.size(), 2u);
+    EXPECT_EQ(r.problem().tasks.size(), 2u);
+    ASSERT_TRUE(got.result.best);
+    EXPECT_EQ(got.change.after_names, std::vector<std::string>{"barrier-00-01"});
+}
+
+} // namespace
+} // namespace envdesign::arrivals
