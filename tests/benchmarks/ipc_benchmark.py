@@ -48,7 +48,7 @@ def validate(binary, domain, problem, plan_file):
 
 def run_fd(fd, domain, problem, time_limit, workdir):
     start = time.perf_counter()
-    proc = subprocess.run([sys.executable, fd, "--overall-time-limit", f"{time_limit}s",
+    proc = subprocess.run([sys.executable, fd, "--overall-time-limit", f"{int(time_limit)}s",
                            "--plan-file", os.path.join(workdir, "fd_plan"), domain, problem,
                            "--search", "astar(lmcut())"],
                           capture_output=True, text=True, cwd=workdir)
