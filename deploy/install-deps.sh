@@ -10,6 +10,7 @@ PACKAGES=(
     libgtest-dev libgmock-dev
     liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
     cyclonedds-dev cyclonedds-tools libcycloneddsidl0
+    gnuplot-nox  # the interplay plot of tests/benchmarks/paper/run_interplay.py
 )
 
 missing=()
