@@ -5,6 +5,7 @@
 #include "ground/grounder.h"
 #include "pddl/parser.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -47,7 +48,7 @@ std::string number(double x) {
 Redesigner::Redesigner(DesignProblem problem, RedesignOptions options)
     : problem_(std::make_unique<DesignProblem>(std::move(problem))), options_(options),
       local_(std::make_unique<design::LocalEvaluator>(*problem_, options.workers, options.planner)),
-      stored_(std::make_unique<StoredEvaluator>(*problem_, *local_)) {}
+      stored_(std::make_unique<StoredEvaluator>(*problem_, *local_, store_)) {}
 
 Distribution Redesigner::distribution() const {
     Distribution d;
@@ -78,8 +79,13 @@ std::optional<std::string> Redesigner::add_task(const NewTask &task) {
 }
 
 void Redesigner::remove_task(const std::string &name) {
-    std::erase_if(problem_->tasks, [&](const design::DesignTask &t) { return t.name == name; });
-    stored_->forget_task(name);
+    auto &tasks = problem_->tasks;
+    auto it =
+        std::find_if(tasks.begin(), tasks.end(), [&](const auto &t) { return t.name == name; });
+    if (it == tasks.end())
+        return;
+    store_.forget(task_key(*problem_, static_cast<int>(it - tasks.begin())));
+    tasks.erase(it);
 }
 
 void Redesigner::set_probabilities(const Distribution &d) {
@@ -155,11 +161,11 @@ Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> 
 
 double Redesigner::objective_of(const Configuration &configuration) const {
     std::vector<design::TaskExplicability> tasks;
-    for (const auto &t : problem_->tasks) {
-        const design::TaskExplicability *e = stored_->find(configuration, t.name);
+    for (int t = 0; t < static_cast<int>(problem_->tasks.size()); ++t) {
+        auto e = stored_->find(configuration, t);
         if (!e)
             return NOT_KNOWN;
-        tasks.push_back(*e);
+        tasks.push_back(std::move(*e));
     }
     return design::objective_of(*problem_, design::design_cost(*problem_, configuration), tasks)
         .value;

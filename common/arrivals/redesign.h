@@ -3,7 +3,8 @@
 // made before (stored_evaluator.h), and saying what changed and why.
 //
 // A Redesigner owns one design problem, an in-process LocalEvaluator (its content-addressed
-// PlanCache kept across searches) and a StoredEvaluator in front of it. Each redesign(D)
+// PlanCache kept across searches) and a StoredEvaluator with its EvaluationStore in front of
+// it. Each redesign(D)
 // sets the tasks' probabilities to D and runs the exact design search again: configurations
 // whose tasks are all stored cost nothing; only configurations never evaluated (skipped or
 // abandoned by the bounds under the old D, or cut short by a time limit) and new tasks go
@@ -79,7 +80,7 @@ public:
     Redesign redesign(const Distribution &d, const std::vector<NewTask> &new_tasks);
 
     const std::optional<design::EvaluatedDesign> &current() const { return current_; }
-    const StoredEvaluator &store() const { return *stored_; }
+    const EvaluationStore &store() const { return store_; }
 
 private:
     // Parses and appends a new task; the refusal message if it cannot.
@@ -95,6 +96,7 @@ private:
     std::unique_ptr<design::DesignProblem> problem_; // stable address: the evaluators hold it
     RedesignOptions options_;
     std::unique_ptr<design::LocalEvaluator> local_;
+    EvaluationStore store_;
     std::unique_ptr<StoredEvaluator> stored_;
     std::optional<design::EvaluatedDesign> current_;
 };

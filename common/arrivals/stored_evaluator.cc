@@ -3,43 +3,49 @@
 namespace envdesign::arrivals {
 
 using design::ConfigurationEvaluation;
-using design::EvaluationStatus;
-using design::ExplicabilityStatus;
 
-StoredEvaluator::StoredEvaluator(const design::DesignProblem &problem, design::Evaluator &inner)
-    : problem_(problem), inner_(inner) {}
+StoredEvaluator::StoredEvaluator(const design::DesignProblem &problem, design::Evaluator &inner,
+                                 EvaluationStore &store)
+    : problem_(problem), inner_(inner), store_(store) {}
 
-const design::TaskExplicability *StoredEvaluator::find(const design::Configuration &configuration,
-                                                       const std::string &task) const {
-    auto it = store_.find({configuration, task});
-    return it == store_.end() ? nullptr : &it->second;
+const TaskKey &StoredEvaluator::key(int task) {
+    if (static_cast<int>(task_keys_.size()) <= task)
+        task_keys_.resize(task + 1);
+    auto &[name, key] = task_keys_[task];
+    if (name != problem_.tasks[task].name) { // first use, or the tasks changed
+        name = problem_.tasks[task].name;
+        key = task_key(problem_, task);
+    }
+    return key;
 }
 
-void StoredEvaluator::forget_task(const std::string &task) {
-    for (auto it = store_.begin(); it != store_.end();)
-        it = it->first.second == task ? store_.erase(it) : std::next(it);
+std::optional<design::TaskExplicability>
+StoredEvaluator::find(const design::Configuration &configuration, int task) {
+    return store_.find(configuration, key(task));
 }
 
-std::optional<ConfigurationEvaluation>
-StoredEvaluator::from_store(const design::Configuration &configuration) const {
+ConfigurationEvaluation StoredEvaluator::from_store(const design::Configuration &configuration) {
     ConfigurationEvaluation e;
     e.configuration = configuration;
-    e.status = EvaluationStatus::COMPLETE;
-    for (const auto &task : problem_.tasks) {
-        const design::TaskExplicability *t = find(configuration, task.name);
-        if (!t)
-            return std::nullopt;
-        e.tasks.emplace_back(*t);
-        e.robot_cost_bounds.emplace_back(); // not needed: every task is known
+    e.status = design::EvaluationStatus::COMPLETE;
+    for (int t = 0; t < static_cast<int>(problem_.tasks.size()); ++t) {
+        e.tasks.push_back(find(configuration, t));
+        e.robot_cost_bounds.push_back(store_.find_robot_bound(configuration, key(t)));
+        if (!e.tasks.back())
+            e.status = design::EvaluationStatus::LIMIT; // not complete
     }
     return e;
 }
 
 void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation) {
-    for (std::size_t i = 0; i < evaluation.tasks.size() && i < problem_.tasks.size(); ++i) {
-        const auto &t = evaluation.tasks[i];
-        if (t && t->status != ExplicabilityStatus::LIMIT)
-            store_.insert_or_assign({evaluation.configuration, problem_.tasks[i].name}, *t);
+    int tasks = static_cast<int>(std::min(evaluation.tasks.size(), problem_.tasks.size()));
+    for (int t = 0; t < tasks; ++t) {
+        if (evaluation.tasks[t])
+            store_.keep(evaluation.configuration, key(t), *evaluation.tasks[t]);
+        if (t < static_cast<int>(evaluation.robot_cost_bounds.size()) &&
+            evaluation.robot_cost_bounds[t])
+            store_.keep_robot_bound(evaluation.configuration, key(t),
+                                    *evaluation.robot_cost_bounds[t]);
     }
 }
 
@@ -48,19 +54,23 @@ void StoredEvaluator::evaluate(const std::vector<design::Configuration> &batch,
                                const design::EvaluationCallbacks &callbacks) {
     std::vector<design::Configuration> missing;
     for (const auto &configuration : batch) {
-        if (auto stored = from_store(configuration)) {
-            ++stored_answers_;
-            callbacks.done(std::move(*stored));
-        } else {
-            missing.push_back(configuration);
+        ConfigurationEvaluation known = from_store(configuration);
+        if (known.status != design::EvaluationStatus::COMPLETE) {
+            if (!callbacks.abandon || !callbacks.abandon(known)) {
+                missing.push_back(configuration);
+                continue;
+            }
+            known.status = design::EvaluationStatus::CUT_OFF;
         }
+        ++stored_answers_;
+        callbacks.done(std::move(known));
     }
     if (missing.empty())
         return;
     design::EvaluationCallbacks keeping;
     keeping.abandon = callbacks.abandon;
     keeping.done = [&](ConfigurationEvaluation evaluation) {
-        keep(evaluation); // partial ones too: a task evaluated before a cut-off is still known
+        keep(evaluation);
         callbacks.done(std::move(evaluation));
     };
     inner_.evaluate(missing, deadline, keeping);

@@ -1,56 +1,63 @@
 #pragma once
-// An Evaluator that keeps every task evaluation it has seen, so that a new task distribution
-// D is a re-weighting and not a re-planning.
+// An Evaluator in front of another that answers from an EvaluationStore
+// (evaluation_store.h) whatever was evaluated before, so that a new task distribution D is
+// a re-weighting and not a re-planning.
 //
-// A task's evaluation under a configuration (its most explicable plan, IE, robot cost) does
-// not depend on D: D only weighs the tasks in the objective (objective.h). So the store is
-// keyed by (configuration, task name) and outlives searches: when the design search for a
-// new D asks for a configuration whose tasks are all stored, it is answered at once, with no
-// job, no grounding and no planner. Only what was never evaluated goes to the inner
-// evaluator: configurations the bounds skipped or abandoned under the old D, tasks added
-// since, and work a time limit cut short (LIMIT answers are not stored).
+// When the design search for a new D asks for a configuration whose tasks are all stored,
+// it is answered at once: no job, no grounding, no planner. A configuration known in part
+// (it was abandoned before) is first shown to the search's `abandon` with what is stored,
+// its robot-cost bounds included; if the search drops it, again no planner. Only the rest
+// goes to the inner evaluator: configurations the bounds skipped or abandoned under the old
+// D and now needed, tasks added since, work a time limit cut short. Its answers and bounds
+// are stored on the way back (those of abandoned configurations too).
 //
-// The DesignProblem must be the one the search and the inner evaluator use; tasks may be
-// added to it between searches (their names are the keys, so indices may grow). Not
-// thread-safe: evaluate() is called by one search at a time, as Evaluator requires.
+//   EvaluationStore store;                      // kept across searches of this problem
+//   LocalEvaluator local(problem, workers);     // or the coordinator's LcmEvaluator
+//   StoredEvaluator stored(problem, local, store);
+//   search_design(problem, stored, options);    // again after changing the probabilities
+//
+// Tasks may be added to or taken out of the problem between evaluate() calls, not changed
+// in place: a task's key is computed once and found again by its name. evaluate() runs on one
+// thread at a time, as the Evaluator interface says.
 
+#include "arrivals/evaluation_store.h"
 #include "design/design_problem.h"
 #include "design/evaluator.h"
 
-#include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace envdesign::arrivals {
 
 class StoredEvaluator : public design::Evaluator {
 public:
-    // Both must outlive the evaluator.
-    StoredEvaluator(const design::DesignProblem &problem, design::Evaluator &inner);
+    // All three must outlive the evaluator; `store` must be the one for
+    // store_key(problem).
+    StoredEvaluator(const design::DesignProblem &problem, design::Evaluator &inner,
+                    EvaluationStore &store);
 
     void evaluate(const std::vector<design::Configuration> &batch, const design::Deadline &deadline,
                   const design::EvaluationCallbacks &callbacks) override;
-    // The inner evaluator's counters; configurations answered from the store add nothing.
+    // The inner evaluator's counters: configurations answered from the store add nothing.
     design::EvaluatorCounters counters() const override { return inner_.counters(); }
 
-    // The stored evaluation of task `task` (a name) under `configuration`, or null.
-    const design::TaskExplicability *find(const design::Configuration &configuration,
-                                          const std::string &task) const;
-    // Forgets every evaluation of task `task` (a task taken out of the problem again).
-    void forget_task(const std::string &task);
-
-    long long stored_answers() const { return stored_answers_; } // configurations, ever
-    std::size_t size() const { return store_.size(); }
+    // The stored evaluation of task index `task` under `configuration`.
+    std::optional<design::TaskExplicability> find(const design::Configuration &configuration,
+                                                  int task);
+    // Configurations answered from the store (complete, or abandoned on stored knowledge).
+    long long stored_answers() const { return stored_answers_; }
 
 private:
-    // Every task of `configuration` from the store, or nullopt if one is missing.
-    std::optional<design::ConfigurationEvaluation>
-    from_store(const design::Configuration &configuration) const;
+    const TaskKey &key(int task);
+    // What the store knows of `configuration` (status COMPLETE when every task is known).
+    design::ConfigurationEvaluation from_store(const design::Configuration &configuration);
     void keep(const design::ConfigurationEvaluation &evaluation);
 
     const design::DesignProblem &problem_;
     design::Evaluator &inner_;
-    std::map<std::pair<design::Configuration, std::string>, design::TaskExplicability> store_;
+    EvaluationStore &store_;
+    std::vector<std::pair<std::string, TaskKey>> task_keys_; // by task index: name, key
     long long stored_answers_ = 0;
 };
 

@@ -1,0 +1,57 @@
+#pragma once
+// Task evaluations kept across design searches, by content.
+//
+// A task's evaluation under a configuration (its most explicable plan, IE, robot cost)
+// depends on the models and the distance only: not on D, not on alpha, beta, kappa, gamma or
+// T, which only weigh evaluations in the objective (objective.h). So evaluations are stored
+// under
+//   - a store key (store_key): both domains, every modification's edits in order, and the
+//     distance; the configurations' indices mean the same in every problem with that key;
+//   - and per entry, the configuration and a task key (task_key): the content of the task's
+//     two problems, so a task that comes back under another name, or a spec re-sent with new
+//     probabilities or new tasks, finds what was stored.
+// Robot-cost bounds (design/dispatcher.h) are kept the same way, so that a configuration
+// the bounds abandoned once can be abandoned again without a planner.
+// One EvaluationStore holds the entries of one store key; its owner keeps one per key (a
+// Redesigner has one; a coordinator could keep a map of them). Thread-safe.
+
+#include "design/configuration.h"
+#include "design/explicability.h"
+#include "design/ground_key.h"
+
+#include <map>
+#include <mutex>
+#include <optional>
+#include <utility>
+
+namespace envdesign::arrivals {
+
+using design::TaskKey;
+
+TaskKey store_key(const design::DesignProblem &problem);
+TaskKey task_key(const design::DesignProblem &problem, int task);
+
+class EvaluationStore {
+public:
+    std::optional<design::TaskExplicability> find(const design::Configuration &configuration,
+                                                  const TaskKey &task) const;
+    // Keeps SOLVED and INEXPLICABLE answers; LIMIT says nothing and is not kept.
+    void keep(const design::Configuration &configuration, const TaskKey &task,
+              const design::TaskExplicability &evaluation);
+    // The robot's optimal cost under a configuration (a lower bound the search uses to
+    // abandon configurations early; INF: the robot has no plan).
+    std::optional<double> find_robot_bound(const design::Configuration &configuration,
+                                           const TaskKey &task) const;
+    void keep_robot_bound(const design::Configuration &configuration, const TaskKey &task,
+                          double bound);
+    // Forgets every evaluation and bound of one task.
+    void forget(const TaskKey &task);
+    std::size_t size() const;
+
+private:
+    mutable std::mutex mutex_;
+    std::map<std::pair<design::Configuration, TaskKey>, design::TaskExplicability> entries_;
+    std::map<std::pair<design::Configuration, TaskKey>, double> robot_bounds_;
+};
+
+} // namespace envdesign::arrivals

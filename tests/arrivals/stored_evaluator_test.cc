@@ -1,0 +1,82 @@
+// The evaluation store: content keys, and a search answered from it.
+
+#include "arrivals/stored_evaluator.h"
+
+#include "design/design_search.h"
+#include "design/design_spec.h"
+#include "design/local_evaluator.h"
+
+#include <gtest/gtest.h>
+
+namespace envdesign::arrivals {
+namespace {
+
+const std::string SPEC = std::string(ENVDESIGN_ARRIVALS_DATA) + "/restaurant-drift.textproto";
+
+// Probabilities, task names and the objective's weights do not change what an evaluation
+// is; the models, the modifications' edits and the distance do.
+TEST(StoreKey, IgnoresWhatOnlyWeighs) {
+    design::DesignProblem a = design::load_design_problem(SPEC);
+    design::DesignProblem b = a;
+    b.tasks[0].probability = 0.2;
+    b.tasks[0].name = "renamed";
+    b.weights.alpha = 7;
+    b.weights.beta = 0.5;
+    b.weights.horizon = 9;
+    b.modifications[0].cost = 100;
+    b.modifications[0].name = "other-name";
+    EXPECT_EQ(store_key(a), store_key(b));
+    EXPECT_EQ(task_key(a, 0), task_key(b, 0));
+    EXPECT_FALSE(task_key(a, 0) == task_key(a, 1));
+
+    design::DesignProblem c = a;
+    c.weights.distance = design::Distance::COST_DIFF;
+    EXPECT_FALSE(store_key(a) == store_key(c));
+    design::DesignProblem d = a;
+    std::swap(d.modifications[0], d.modifications[1]); // indices mean other edits
+    EXPECT_FALSE(store_key(a) == store_key(d));
+}
+
+// A second problem with the same content (a task renamed, other weights) searched with a
+// fresh LocalEvaluator but the first one's store: no planner run, no task evaluated.
+TEST(StoredEvaluator, AnswersFromAnotherSearchesStore) {
+    design::DesignProblem a = design::load_design_problem(SPEC);
+    EvaluationStore store;
+    design::LocalEvaluator local_a(a, 1);
+    StoredEvaluator stored_a(a, local_a, store);
+    design::DesignResult first = design::search_design(a, stored_a, {});
+    EXPECT_GT(first.counters.evaluator.planner_runs, 0);
+    EXPECT_GT(store.size(), 0u);
+    EXPECT_EQ(stored_a.stored_answers(), 0);
+
+    design::DesignProblem b = a;
+    b.tasks[1].name = "serve-booth-2";
+    design::LocalEvaluator local_b(b, 1);
+    StoredEvaluator stored_b(b, local_b, store);
+    design::DesignResult second = design::search_design(b, stored_b, {});
+    EXPECT_EQ(second.counters.evaluator.planner_runs, 0);
+    EXPECT_EQ(second.counters.evaluator.task_evaluations, 0);
+    EXPECT_EQ(second.best->ranked.configuration, first.best->ranked.configuration);
+    EXPECT_DOUBLE_EQ(second.best->objective.value, first.best->objective.value);
+    EXPECT_GT(stored_b.stored_answers(), 0);
+}
+
+// LIMIT answers say nothing and are not kept.
+TEST(EvaluationStore, KeepsOnlyAnswers) {
+    EvaluationStore store;
+    design::TaskExplicability limit; // status LIMIT by default
+    store.keep({0}, {1, 2}, limit);
+    EXPECT_EQ(store.size(), 0u);
+    design::TaskExplicability solved;
+    solved.status = design::ExplicabilityStatus::SOLVED;
+    solved.ie = 1;
+    store.keep({0}, {1, 2}, solved);
+    ASSERT_TRUE(store.find({0}, {1, 2}));
+    EXPECT_EQ(store.find({0}, {1, 2})->ie, 1);
+    EXPECT_FALSE(store.find({1}, {1, 2}));
+    store.forget({1, 2});
+    EXPECT_EQ(store.size(), 0u);
+}
+
+} // namespace
+} // namespace envdesign::arrivals
