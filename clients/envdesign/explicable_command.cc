@@ -16,7 +16,8 @@ design::ModelPair load_models(const ExplicableFlags &flags) {
                                                      : pddl::parse_domain_file(flags.human_domain);
     models.robot_problem = pddl::parse_problem_file(flags.problem, models.robot_domain);
     const std::string &human = flags.human_problem.empty() ? flags.problem : flags.human_problem;
-    models.human_problem = pddl::parse_problem_file(human, models.human_domain);
+    models.human_problem =
+        pddl::parse_problem_file(human, models.human_domain, models.robot_domain.name);
     return models;
 }
 

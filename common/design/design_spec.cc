@@ -96,7 +96,8 @@ private:
             std::string human_file =
                 t.human_problem().empty() ? file : resolve(human_field, t.human_problem());
             task.human_problem = load_pddl(human_field, [&] {
-                return pddl::parse_problem_file(human_file, problem_.human_domain);
+                return pddl::parse_problem_file(human_file, problem_.human_domain,
+                                                problem_.robot_domain.name);
             });
             problem_.tasks.push_back(std::move(task));
         }

@@ -60,8 +60,9 @@ TaskExplicability evaluate_explicability(const ModelPair &models, Distance dista
     result.plan = std::move(explicable.plan);
     result.ie = inexplicability(result.human_plan_cost, *result.human_optimal_cost, distance);
     // P_H has no plan although P_mod has one only if the models contradict the compilation.
-    result.status =
-        std::isinf(result.ie) ? ExplicabilityStatus::INEXPLICABLE : ExplicabilityStatus::SOLVED;
+    // (exp of a large cost gap overflows to inf; that is a huge IE, not a missing plan.)
+    bool planless = std::isinf(result.human_plan_cost) || std::isinf(*result.human_optimal_cost);
+    result.status = planless ? ExplicabilityStatus::INEXPLICABLE : ExplicabilityStatus::SOLVED;
     return result;
 }
 

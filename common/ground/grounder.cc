@@ -5,6 +5,7 @@
 #include "ground/simplify.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 
 namespace envdesign::ground {
@@ -97,6 +98,9 @@ private:
                                            ", the cost of action '" + action.name + "'");
             total += value->second;
         }
+        if (total > std::numeric_limits<Cost>::max() / 2)  // f = g + h must not overflow either
+            throw pddl::ParseError(action.location, "the cost of an instance of action '" +
+                                                        action.name + "' is too large");
         return static_cast<Cost>(total);
     }
 
@@ -131,6 +135,11 @@ private:
     void add_goal() {
         bool unreachable = false;
         for (const auto &l : problem_.goal) {
+            if (l.atom.predicate == "=") {
+                bool same = r_.object_id(l.atom.args[0]) == r_.object_id(l.atom.args[1]);
+                unreachable |= same == l.negated;
+                continue;
+            }
             AtomKey atom = key(l.atom, nullptr);
             bool fluent = r_.is_fluent[atom[0]];
             bool reached = r_.is_reached(atom);

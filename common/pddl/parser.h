@@ -16,7 +16,11 @@ Domain parse_domain(const SExpr &define, const std::string &file);
 Domain parse_domain_file(const std::string &path);
 
 // The problem is checked against `domain`: every predicate, object and type must exist.
-Problem parse_problem(const SExpr &define, const std::string &file, const Domain &domain);
-Problem parse_problem_file(const std::string &path, const Domain &domain);
+// Its (:domain NAME) must be domain.name or, when given, `other_domain_name` (a human's
+// problem may be the robot's own file, naming the robot's domain).
+Problem parse_problem(const SExpr &define, const std::string &file, const Domain &domain,
+                      const std::string &other_domain_name = "");
+Problem parse_problem_file(const std::string &path, const Domain &domain,
+                           const std::string &other_domain_name = "");
 
 }  // namespace envdesign::pddl

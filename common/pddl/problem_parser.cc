@@ -49,7 +49,8 @@ void parse_metric(const SExpr &section, Problem &problem) {
 
 }  // namespace
 
-Problem parse_problem(const SExpr &define, const std::string &file, const Domain &domain) {
+Problem parse_problem(const SExpr &define, const std::string &file, const Domain &domain,
+                      const std::string &other_domain_name) {
     if (!define.has_head("define") || define.items.size() < 2 ||
         !define.items[1].has_head("problem") || define.items[1].items.size() != 2)
         throw ParseError(define.location, "expected '(define (problem NAME) ...)'");
@@ -70,7 +71,8 @@ Problem parse_problem(const SExpr &define, const std::string &file, const Domain
             if (section.items.size() != 2 || section.items[1].is_list)
                 throw ParseError(section.location, "expected '(:domain NAME)'");
             problem.domain_name = section.items[1].symbol;
-            if (problem.domain_name != domain.name)
+            if (problem.domain_name != domain.name &&
+                (other_domain_name.empty() || problem.domain_name != other_domain_name))
                 throw ParseError(section.items[1].location,
                                  "problem is for domain '" + problem.domain_name +
                                      "' but the domain file defines '" + domain.name + "'");
@@ -105,8 +107,9 @@ Problem parse_problem(const SExpr &define, const std::string &file, const Domain
     return problem;
 }
 
-Problem parse_problem_file(const std::string &path, const Domain &domain) {
-    return parse_problem(read_sexpr_file(path), path, domain);
+Problem parse_problem_file(const std::string &path, const Domain &domain,
+                           const std::string &other_domain_name) {
+    return parse_problem(read_sexpr_file(path), path, domain, other_domain_name);
 }
 
 }  // namespace envdesign::pddl

@@ -57,6 +57,10 @@ private:
         SExpr list;
         list.is_list = true;
         list.location = here();
+        // Recursion depth is bounded so that hostile input fails cleanly, not on the stack.
+        if (++depth_ > MAX_DEPTH)
+            throw ParseError(list.location, "parentheses nested more than " +
+                                                std::to_string(MAX_DEPTH) + " deep");
         advance();  // '('
         while (true) {
             skip_space();
@@ -65,6 +69,7 @@ private:
             char c = text_[pos_];
             if (c == ')') {
                 advance();
+                --depth_;
                 return list;
             }
             list.items.push_back(c == '(' ? read_list() : read_symbol());
@@ -84,7 +89,9 @@ private:
         return symbol;
     }
 
+    static constexpr int MAX_DEPTH = 10000;
     const std::string &text_;
+    int depth_ = 0;
     std::string file_;
     std::size_t pos_ = 0;
     int line_ = 1;

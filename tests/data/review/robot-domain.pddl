@@ -1,0 +1,7 @@
+(define (domain t)
+ (:requirements :strips :typing :equality :negative-preconditions)
+ (:types loc)
+ (:predicates (at ?x - loc) (conn ?x ?y - loc))
+ (:action move :parameters (?x ?y - loc)
+   :precondition (and (at ?x) (conn ?x ?y))
+   :effect (and (not (at ?x)) (at ?y))))
