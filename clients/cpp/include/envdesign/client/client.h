@@ -1,0 +1,75 @@
+#pragma once
+// envdesign's C++ client: asks a running coordinator (envdesign-coordinator) for the optimal
+// design of a design problem file, over LCM. Installed with envdesign; in another CMake
+// project:
+//
+//   find_package(envdesign REQUIRED)
+//   target_link_libraries(app PRIVATE envdesign::client)
+//
+//   #include <envdesign/client/client.h>
+//   envdesign::client::Options options;
+//   options.on_progress = [](const envdesign::client::Progress &p) { ... };
+//   envdesign::client::Result r =
+//       envdesign::client::run_design_remote("spec.textproto", "udpm://239.255.76.67:7667?ttl=0",
+//       options);
+//   if (r.exit_code == 0) std::cout << r.json << "\n";
+//
+// The client reads the spec and the PDDL files it names and sends them inlined in one
+// request; it re-sends the request when the coordinator stays silent (a lost datagram),
+// and cancels it when its own timeout passes. Exit codes are SPEC.md's.
+
+#include <functional>
+#include <string>
+
+// The library exports only what this header declares.
+#define ENVDESIGN_CLIENT_API __attribute__((visibility("default")))
+
+namespace envdesign::client {
+
+struct Progress {
+    std::string state;         // "queued", "loading", "searching", "done"
+    long long done = 0;        // configurations evaluated, abandoned or skipped
+    long long total = 0;       // configurations in the search space
+    double best_objective = 0; // +inf while there is none
+    long long planner_runs = 0;
+    long long cache_hits = 0;
+    long long evaluations = 0; // planner answers
+    int jobs_in_flight = 0;
+    int planners = 0;   // planners alive
+    double seconds = 0; // since the coordinator took the request
+};
+
+struct Options {
+    double time_limit_s = -1;        // < 0: the spec's time_limit_s; 0: none
+    int max_design_size = -1;        // < 0: the spec's; 0: no limit
+    std::string prune = "none";      // "none" | "relevant"
+    std::string heuristic = "lmcut"; // "lmcut" | "hmax" | "blind"
+    double timeout_s = 0;            // stop waiting (and cancel) after this; 0: never
+    double resend_after_s = 3;       // silence after which the request is sent again
+    double give_up_after_s = 30;     // silence after which no coordinator is assumed
+    // Called on the calling thread for each progress message.
+    std::function<void(const Progress &)> on_progress;
+};
+
+struct Result {
+    int exit_code = 1;  // 0 a design, 2 bad input, 4 time limit or timeout, 1 anything else
+    std::string status; // "optimal", "best_found", or "error"
+    std::string error;  // status "error": the message ("FILE:LINE:COL: error: ...")
+    std::string json;   // SPEC.md's JSON result, one line (empty for "error")
+    std::string text;   // what `envdesign design` prints without --json
+};
+
+// Designs `spec_path` on the coordinator at `lcm_url` (empty: LCM's default URL). Never
+// throws for bad input or a missing coordinator: that is in the result.
+ENVDESIGN_CLIENT_API Result run_design_remote(const std::string &spec_path,
+                                              const std::string &lcm_url,
+                                              const Options &options = {});
+
+// A progress callback that draws a live line on stderr when it is a terminal (nothing
+// otherwise), for Options::on_progress.
+ENVDESIGN_CLIENT_API std::function<void(const Progress &)> stderr_progress();
+
+// $LCM_DEFAULT_URL, else "udpm://239.255.76.67:7667?ttl=0".
+ENVDESIGN_CLIENT_API std::string default_url();
+
+} // namespace envdesign::client

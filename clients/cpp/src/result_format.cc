@@ -1,0 +1,115 @@
+#include "result_format.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <sstream>
+
+namespace envdesign::client {
+namespace {
+
+using nlohmann::json;
+
+// As the engine writes numbers: integral values as integers, infinity as "inf".
+json number(double value) {
+    if (std::isinf(value))
+        return "inf";
+    if (value == std::floor(value) && std::abs(value) < 1e15)
+        return static_cast<long long>(value);
+    return value;
+}
+
+json objective_json(const envdesign::design_terms_t &t) {
+    return {{"objective", number(t.objective)},
+            {"terms",
+             {{"inexplicability", number(t.inexplicability)},
+              {"design_cost", number(t.design_cost)},
+              {"robot_cost", number(t.robot_cost)}}}};
+}
+
+json tasks_json(const envdesign::design_result_t &r) {
+    json tasks = json::array();
+    for (const auto &t : r.tasks)
+        tasks.push_back({{"name", t.name},
+                         {"probability", t.probability},
+                         {"ie", number(t.ie)},
+                         {"robot_cost", number(t.robot_cost)},
+                         {"human_plan_cost", number(t.human_plan_cost)},
+                         {"human_optimal_cost",
+                          t.has_human_optimal_cost ? number(t.human_optimal_cost) : json()},
+                         {"plan", t.plan}});
+    return tasks;
+}
+
+void put_counters(json &out, const envdesign::design_counters_t &c) {
+    out["configurations_evaluated"] = c.configurations_evaluated;
+    out["planner_runs"] = c.planner_runs;
+    out["seconds"] = c.seconds;
+    out["configurations_total"] = c.configurations_total;
+    out["configurations_abandoned"] = c.configurations_abandoned;
+    out["configurations_skipped"] = c.configurations_skipped;
+    out["configurations_pruned"] = c.configurations_pruned;
+    out["task_evaluations"] = c.task_evaluations;
+    out["cache_hits"] = c.cache_hits;
+    out["groundings_skipped"] = c.groundings_skipped;
+    out["planner_seconds"] = c.planner_seconds;
+    out["cluster"] = {{"jobs_sent", c.jobs_sent},
+                      {"jobs_resent", c.jobs_resent},
+                      {"duplicates_ignored", c.duplicates_ignored},
+                      {"planners_used", c.planners_used}};
+}
+
+std::string shown(double value) { return number(value).dump(); }
+
+void terms_line(std::ostream &out, const char *label, const envdesign::design_terms_t &t) {
+    out << label << shown(t.objective) << " (inexplicability " << shown(t.inexplicability)
+        << ", design cost " << shown(t.design_cost) << ", robot cost " << shown(t.robot_cost)
+        << ")\n";
+}
+
+} // namespace
+
+std::string result_json(const envdesign::design_result_t &r) {
+    json out;
+    out["status"] = r.status;
+    if (r.has_design) {
+        out["design"] = r.design;
+        out.update(objective_json(r.best));
+        out["tasks"] = tasks_json(r);
+    } else {
+        out["design"] = nullptr;
+        out["objective"] = nullptr;
+        out["terms"] = nullptr;
+        out["tasks"] = json::array();
+    }
+    out["baseline"] = r.has_baseline ? objective_json(r.baseline) : json();
+    put_counters(out, r.counters);
+    out["limit_reached"] = r.limit_reached != 0;
+    return out.dump();
+}
+
+std::string result_text(const envdesign::design_result_t &r) {
+    std::ostringstream out;
+    out << "status: " << r.status << "\n";
+    if (!r.has_design) {
+        out << "no configuration was evaluated in time\n";
+        return out.str();
+    }
+    out << "design: {";
+    for (std::size_t i = 0; i < r.design.size(); ++i)
+        out << (i ? ", " : "") << r.design[i];
+    out << "}\n";
+    terms_line(out, "objective: ", r.best);
+    if (r.has_baseline)
+        terms_line(out, "baseline: ", r.baseline);
+    for (const auto &t : r.tasks) {
+        out << "task " << t.name << ": ie " << shown(t.ie) << ", robot cost " << shown(t.robot_cost)
+            << ", plan";
+        for (const auto &step : t.plan)
+            out << " " << step;
+        out << "\n";
+    }
+    return out.str();
+}
+
+} // namespace envdesign::client

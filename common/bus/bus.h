@@ -1,0 +1,131 @@
+#pragma once
+// Overview: the one wrapper of LCM in envdesign. A Bus owns an lcm::LCM and offers typed
+// publish<T> and subscribe<T> with std::function handlers (LCM 1.3.1 has no lambda
+// subscribe; we adapt through subscribeFunction and a context pointer).
+//
+//   bus::Bus bus("memq://", logger);                  // tests; "udpm://..." deployed
+//   bus::Subscription s = bus.subscribe<envdesign::job_t>(bus::JOB,
+//       [&](const envdesign::job_t &job) { ... });
+//   bus.publish(bus::JOB, job);                        // any thread
+//   while (running) bus.handle(std::chrono::milliseconds(20));   // one thread
+//
+// Contract:
+//   - publish() is thread-safe; handle(), subscribe() and Subscription's destruction belong
+//     to one thread (the bus thread), or happen while no thread is in handle().
+//   - Handlers run on the thread in handle(). They never let an exception escape: a message
+//     that does not decode as T in exactly its size (garbage, a foreign type, a truncated or
+//     lying length) is dropped, counted in malformed() and logged; so is one a handler
+//     rejects with reject(); an exception out of a handler is logged and counted too.
+//   - Each subscription queues `queue_capacity` messages between handle() calls (LCM's
+//     default of 30 drops bursts of jobs and answers).
+//   - In-process: "memq://" delivers only within this Bus; cores that talk in one process
+//     must share it.
+
+#include "bus/codec.h"
+
+#include <lcm/lcm-cpp.hpp>
+#include <spdlog/spdlog.h>
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+namespace envdesign::bus {
+
+class BusError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+class Bus;
+
+// One channel's handler; unsubscribes when destroyed. Move-only.
+class Subscription {
+public:
+    Subscription() = default;
+    Subscription(Subscription &&other) noexcept;
+    Subscription &operator=(Subscription &&other) noexcept;
+    Subscription(const Subscription &) = delete;
+    Subscription &operator=(const Subscription &) = delete;
+    ~Subscription();
+
+private:
+    friend class Bus;
+    struct Slot;
+    Subscription(Bus *bus, lcm::Subscription *raw, std::unique_ptr<Slot> slot);
+    void reset();
+
+    Bus *bus_ = nullptr;
+    lcm::Subscription *raw_ = nullptr;
+    std::unique_ptr<Slot> slot_;
+};
+
+using RawHandler = std::function<void(const void *data, int size)>;
+
+class Bus {
+public:
+    static constexpr int DEFAULT_QUEUE = 10000;
+
+    // Throws BusError when LCM cannot start on `url` (e.g. udpm without a multicast route).
+    Bus(const std::string &url, std::shared_ptr<spdlog::logger> logger);
+    ~Bus();
+    Bus(const Bus &) = delete;
+    Bus &operator=(const Bus &) = delete;
+
+    const std::string &url() const { return url_; }
+    spdlog::logger &log() const { return *logger_; }
+
+    template <typename Message> void publish(const std::string &channel, const Message &message) {
+        std::string bytes = encode_message(message);
+        publish_raw(channel, bytes.data(), static_cast<int>(bytes.size()));
+    }
+    void publish_raw(const std::string &channel, const void *data, int size);
+
+    template <typename Message>
+    Subscription subscribe(const std::string &channel, std::function<void(const Message &)> handler,
+                           int queue_capacity = DEFAULT_QUEUE) {
+        return subscribe_raw(
+            channel,
+            [this, channel, handler = std::move(handler)](const void *data, int size) {
+                Message message;
+                if (!decode_message(data, size, message)) {
+                    reject(channel, "does not decode as " + std::string(Message::getTypeName()) +
+                                        " (" + std::to_string(size) + " bytes)");
+                    return;
+                }
+                handler(message);
+            },
+            queue_capacity);
+    }
+    Subscription subscribe_raw(const std::string &channel, RawHandler handler,
+                               int queue_capacity = DEFAULT_QUEUE);
+
+    // Dispatches what arrives within `timeout`: > 0 handled a message, 0 timed out, < 0 error.
+    int handle(std::chrono::milliseconds timeout);
+
+    // Counts and logs a message on `channel` that cannot be used (thread-safe).
+    void reject(const std::string &channel, const std::string &why);
+    long long malformed() const { return malformed_.load(); }
+    long long handler_errors() const { return handler_errors_.load(); }
+
+private:
+    friend class Subscription;
+    static void trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channel,
+                           void *context);
+    void run_handler(const RawHandler &handler, const lcm::ReceiveBuffer *buffer,
+                     const std::string &channel);
+    void unsubscribe(lcm::Subscription *raw);
+
+    std::string url_;
+    std::shared_ptr<spdlog::logger> logger_;
+    lcm::LCM lcm_;
+    std::mutex publish_mutex_;
+    std::atomic<long long> malformed_{0};
+    std::atomic<long long> handler_errors_{0};
+};
+
+} // namespace envdesign::bus

@@ -1,0 +1,26 @@
+#pragma once
+// The LCM channels of envdesign (SPEC.md "LCM"), each with its one message type. Clients
+// speak to the coordinator on the first four; the rest are between the coordinator and
+// its planners (services/README.md draws the message flow).
+
+namespace envdesign::bus {
+
+// client -> coordinator
+inline constexpr const char *REQUEST = "ENVDESIGN_REQUEST"; // design_request_t
+inline constexpr const char *CANCEL = "ENVDESIGN_CANCEL";   // cancel_t
+// coordinator -> clients
+inline constexpr const char *PROGRESS = "ENVDESIGN_PROGRESS"; // design_progress_t
+inline constexpr const char *RESULT = "ENVDESIGN_RESULT";     // design_result_t
+// coordinator -> planners
+inline constexpr const char *SPEC = "ENVDESIGN_SPEC"; // spec_chunk_t
+inline constexpr const char *JOB = "ENVDESIGN_JOB";   // job_t
+// planners -> coordinator
+inline constexpr const char *SPEC_NEED = "ENVDESIGN_SPEC_NEED";   // spec_need_t
+inline constexpr const char *EVALUATION = "ENVDESIGN_EVALUATION"; // evaluation_t
+inline constexpr const char *HEARTBEAT = "ENVDESIGN_HEARTBEAT";   // planner_heartbeat_t
+
+// Every channel above, for tools and tests.
+inline constexpr const char *ALL_CHANNELS[] = {REQUEST, CANCEL,    PROGRESS,   RESULT,   SPEC,
+                                               JOB,     SPEC_NEED, EVALUATION, HEARTBEAT};
+
+} // namespace envdesign::bus

@@ -1,0 +1,191 @@
+#include "cluster/coordinator.h"
+
+#include "bus/channels.h"
+#include "bus/log.h"
+#include "cluster/spec_chunks.h"
+#include "cluster/wire.h"
+
+#include <cmath>
+
+namespace envdesign::cluster {
+namespace {
+
+using envdesign::design_progress_t;
+using envdesign::design_request_t;
+
+// Why `r` cannot be served (nullopt: it can).
+std::optional<std::string> request_problem(const design_request_t &r) {
+    if (r.prune != design_request_t::PRUNE_NONE && r.prune != design_request_t::PRUNE_RELEVANT)
+        return "unknown prune " + std::to_string(r.prune);
+    if (r.heuristic < design_request_t::HEURISTIC_LMCUT ||
+        r.heuristic > design_request_t::HEURISTIC_BLIND)
+        return "unknown heuristic " + std::to_string(r.heuristic);
+    if (std::isnan(r.time_limit_s) || std::isinf(r.time_limit_s))
+        return "the time limit is not a number";
+    if (r.spec.name.empty())
+        return "the spec has no name";
+    return std::nullopt;
+}
+
+bool progress_changed(const design_progress_t &a, const design_progress_t &b) {
+    return a.state != b.state || a.done != b.done || a.total != b.total ||
+           a.evaluations != b.evaluations || a.best_objective != b.best_objective;
+}
+
+} // namespace
+
+Coordinator::Coordinator(bus::Bus &bus, CoordinatorConfig config)
+    : bus_(bus), config_(std::move(config)), router_(bus, config_.pool, config_.instance),
+      specs_(config_.instance) {
+    subscriptions_.push_back(bus_.subscribe<design_request_t>(
+        bus::REQUEST, [this](const design_request_t &r) { on_request(r); }));
+    subscriptions_.push_back(bus_.subscribe<envdesign::cancel_t>(
+        bus::CANCEL, [this](const envdesign::cancel_t &c) { on_cancel(c); }));
+    subscriptions_.push_back(bus_.subscribe<envdesign::spec_need_t>(
+        bus::SPEC_NEED, [this](const envdesign::spec_need_t &n) { on_spec_need(n); }));
+    subscriptions_.push_back(bus_.subscribe<envdesign::evaluation_t>(
+        bus::EVALUATION, [this](const envdesign::evaluation_t &e) { router_.on_evaluation(e); }));
+    subscriptions_.push_back(bus_.subscribe<envdesign::planner_heartbeat_t>(
+        bus::HEARTBEAT,
+        [this](const envdesign::planner_heartbeat_t &b) { router_.on_heartbeat(b); }));
+}
+
+Coordinator::~Coordinator() {
+    subscriptions_.clear();
+    for (auto &[name, open] : open_)
+        open.run->cancel();
+}
+
+void Coordinator::on_request(const design_request_t &request) {
+    if (request.sender.empty() || request.request_id == 0) {
+        bus_.reject(bus::REQUEST, "a request without client name or request id");
+        return;
+    }
+    std::string name = bus::request_name(request.sender, request.request_id);
+    if (auto it = open_.find(name); it != open_.end()) {
+        std::lock_guard lock(stats_mutex_);
+        ++stats_.repeats;
+        publish_progress(it->second, Clock::now(), true); // "still at it"
+        return;
+    }
+    if (auto it = closed_.find(name); it != closed_.end()) {
+        {
+            std::lock_guard lock(stats_mutex_);
+            ++stats_.repeats;
+        }
+        bus_.log().info("request {} | repeated; its result is sent again", name);
+        publish_result(it->second.result);
+        return;
+    }
+    if (auto problem = request_problem(request)) {
+        bus_.reject(bus::REQUEST, name + ": " + *problem);
+        closed_[name] = {error_result(2, "bad request: " + *problem), Clock::now()};
+        closed_[name].result.request_id = request.request_id;
+        closed_[name].result.client = request.sender;
+        publish_result(closed_[name].result);
+        return;
+    }
+    bus_.log().info("request {} | accepted: spec {} with {} file(s)", name, request.spec.name,
+                    request.spec.files.size());
+    RunContext context{bus_, router_, specs_, config_.work_dir, config_.grace_s};
+    open_[name].run = std::make_unique<RequestRun>(context, request);
+    waiting_.push_back(name);
+    {
+        std::lock_guard lock(stats_mutex_);
+        ++stats_.accepted;
+    }
+    start_waiting();
+}
+
+void Coordinator::on_cancel(const envdesign::cancel_t &cancel) {
+    std::string name = bus::request_name(cancel.sender, cancel.request_id);
+    auto it = open_.find(name);
+    if (it == open_.end())
+        return; // finished already, or never here
+    bus_.log().info("request {} | cancelled by the client: {}", name, cancel.reason);
+    it->second.run->cancel();
+}
+
+void Coordinator::on_spec_need(const envdesign::spec_need_t &need) {
+    if (need.coordinator != config_.instance)
+        return;
+    auto chunks =
+        specs_.need(need.spec_hash, std::vector<int>(need.missing.begin(), need.missing.end()),
+                    need.request_id, Clock::now());
+    if (!chunks.empty())
+        bus_.log().info("request {} | {} chunk(s) of spec {} sent to {}", need.request_id,
+                        chunks.size(), need.spec_hash.substr(0, 12), need.sender);
+    for (const auto &chunk : chunks)
+        bus_.publish(bus::SPEC, chunk);
+}
+
+void Coordinator::tick() {
+    router_.tick();
+    close_finished();
+    start_waiting();
+    auto now = Clock::now();
+    for (auto &[name, open] : open_)
+        publish_progress(open, now, false);
+    auto expired = now - std::chrono::duration_cast<Clock::duration>(
+                             std::chrono::duration<double>(config_.keep_results_s));
+    std::erase_if(closed_, [&](const auto &entry) { return entry.second.at < expired; });
+}
+
+CoordinatorStats Coordinator::stats() const {
+    std::lock_guard lock(stats_mutex_);
+    return stats_;
+}
+
+void Coordinator::start_waiting() {
+    int active = 0;
+    for (const auto &[name, open] : open_)
+        active += open.started ? 1 : 0;
+    while (active < config_.max_active && !waiting_.empty()) {
+        Open &open = open_.at(waiting_.front());
+        waiting_.pop_front();
+        open.run->start();
+        open.started = true;
+        ++active;
+    }
+    std::lock_guard lock(stats_mutex_);
+    stats_.open = static_cast<int>(open_.size());
+}
+
+void Coordinator::close_finished() {
+    for (auto it = open_.begin(); it != open_.end();) {
+        if (!it->second.run->finished()) {
+            ++it;
+            continue;
+        }
+        publish_progress(it->second, Clock::now(), true); // the final count, state DONE
+        envdesign::design_result_t result = it->second.run->result();
+        closed_[it->first] = {result, Clock::now()};
+        it = open_.erase(it); // joins the finished thread
+        publish_result(std::move(result));
+    }
+}
+
+void Coordinator::publish_progress(Open &open, Clock::time_point now, bool force) {
+    design_progress_t p = open.run->progress();
+    auto since = std::chrono::duration<double>(now - open.last_progress).count();
+    bool due = since >= config_.keepalive_s ||
+               (since >= config_.progress_interval_s && progress_changed(p, open.last_sent));
+    if (!force && !due)
+        return;
+    p.utime = bus::now_utime();
+    p.sender = config_.instance;
+    p.planners = static_cast<std::int16_t>(router_.pool().live_planners());
+    bus_.publish(bus::PROGRESS, p);
+    open.last_progress = now;
+    open.last_sent = p;
+}
+
+void Coordinator::publish_result(envdesign::design_result_t result) {
+    result.utime = bus::now_utime();
+    result.sender = config_.instance;
+    bus_.publish(bus::RESULT, result);
+    std::lock_guard lock(stats_mutex_);
+    ++stats_.results;
+}
+
+} // namespace envdesign::cluster

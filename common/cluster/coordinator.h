@@ -1,0 +1,89 @@
+#pragma once
+// The coordinator service's core (services/coordinator): takes design requests on
+// ENVDESIGN_REQUEST, runs each one's design search on its own thread (request_run.h) with
+// jobs sent to the planners (job_router.h), and publishes ENVDESIGN_PROGRESS and
+// ENVDESIGN_RESULT. Requests are named by (client, request_id): a repeat of an open request
+// gets its progress, a repeat of a finished one its result again (kept keep_results_s).
+// At most max_active requests search at once; the others wait in order.
+//
+//   bus::Bus bus(url, logger);
+//   Coordinator coordinator(bus, config);
+//   while (running) { bus.handle(20ms); coordinator.tick(); }
+//
+// Handlers and tick() run on the bus thread. Messages that make no sense (bad sizes, unknown
+// enums, a request without a client name) are counted in bus.malformed() and logged.
+
+#include "bus/bus.h"
+#include "cluster/job_router.h"
+#include "cluster/request_run.h"
+#include "cluster/spec_library.h"
+#include "envdesign/cancel_t.hpp"
+#include "envdesign/spec_need_t.hpp"
+
+#include <deque>
+#include <map>
+#include <memory>
+
+namespace envdesign::cluster {
+
+struct CoordinatorConfig {
+    std::string instance; // this coordinator's name on the bus
+    std::string work_dir; // scratch space for loading specs
+    int max_active = 4;   // requests searched at once
+    PoolConfig pool;
+    double grace_s = 1.0;             // after a deadline, LIMIT answers are awaited this long
+    double progress_interval_s = 0.1; // progress at most this often per request
+    double keepalive_s = 0.5;         // and at least this often while it is open
+    double keep_results_s = 600;      // results kept for repeats of a request
+};
+
+struct CoordinatorStats {
+    long long accepted = 0; // distinct requests taken
+    long long repeats = 0;  // repeats of a known request
+    long long results = 0;  // results published (repeats included)
+    int open = 0;           // searching or waiting
+};
+
+class Coordinator {
+public:
+    Coordinator(bus::Bus &bus, CoordinatorConfig config);
+    ~Coordinator(); // cancels and joins the open requests
+
+    void tick();
+    CoordinatorStats stats() const;
+    const JobRouter &router() const { return router_; }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    struct Open {
+        std::unique_ptr<RequestRun> run;
+        bool started = false;
+        Clock::time_point last_progress{};
+        envdesign::design_progress_t last_sent{};
+    };
+    struct Closed {
+        envdesign::design_result_t result;
+        Clock::time_point at;
+    };
+
+    void on_request(const envdesign::design_request_t &request);
+    void on_cancel(const envdesign::cancel_t &cancel);
+    void on_spec_need(const envdesign::spec_need_t &need);
+    void start_waiting();
+    void close_finished();
+    void publish_progress(Open &open, Clock::time_point now, bool force);
+    void publish_result(envdesign::design_result_t result);
+
+    bus::Bus &bus_;
+    CoordinatorConfig config_;
+    JobRouter router_;
+    SpecLibrary specs_;
+    std::map<std::string, Open> open_;
+    std::deque<std::string> waiting_;
+    std::map<std::string, Closed> closed_;
+    mutable std::mutex stats_mutex_;
+    CoordinatorStats stats_;
+    std::vector<bus::Subscription> subscriptions_; // last: handlers stop before the rest goes
+};
+
+} // namespace envdesign::cluster

@@ -1,0 +1,130 @@
+#include "cluster/job_router.h"
+
+#include "bus/channels.h"
+#include "bus/log.h"
+#include "cluster/wire.h"
+
+#include <random>
+
+namespace envdesign::cluster {
+
+void Inbox::push(envdesign::evaluation_t answer) {
+    {
+        std::lock_guard lock(mutex_);
+        answers_.push_back(std::move(answer));
+    }
+    ready_.notify_one();
+}
+
+std::optional<envdesign::evaluation_t> Inbox::pop(Clock::time_point until) {
+    std::unique_lock lock(mutex_);
+    ready_.wait_until(lock, until, [&] { return woken_ || !answers_.empty(); });
+    woken_ = false;
+    if (answers_.empty())
+        return std::nullopt;
+    envdesign::evaluation_t answer = std::move(answers_.front());
+    answers_.pop_front();
+    return answer;
+}
+
+void Inbox::wake() {
+    {
+        std::lock_guard lock(mutex_);
+        woken_ = true;
+    }
+    ready_.notify_one();
+}
+
+namespace {
+
+// Job ids start at a random point so that ids of a restarted coordinator (or of another
+// one on the same bus) do not meet the old ones in a planner's memory of answers.
+std::int64_t first_job_id() {
+    std::random_device random;
+    std::uint64_t high = (static_cast<std::uint64_t>(random()) & 0x3fffff) << 40;
+    return static_cast<std::int64_t>(high | 1);
+}
+
+} // namespace
+
+JobRouter::JobRouter(bus::Bus &bus, PoolConfig config, std::string instance)
+    : bus_(bus), pool_(config), instance_(std::move(instance)), next_job_id_(first_job_id()) {}
+
+std::uint64_t JobRouter::open(Inbox &inbox) {
+    std::uint64_t owner = next_owner_++;
+    std::lock_guard lock(inboxes_mutex_);
+    inboxes_[owner] = &inbox;
+    return owner;
+}
+
+void JobRouter::close(std::uint64_t owner) {
+    {
+        std::lock_guard lock(inboxes_mutex_);
+        inboxes_.erase(owner);
+    }
+    pool_.forget_owner(owner);
+}
+
+std::int64_t JobRouter::send(std::uint64_t owner, envdesign::job_t job) {
+    job.job_id = next_job_id_++;
+    job.sender = instance_;
+    std::int64_t id = job.job_id;
+    publish(pool_.submit(owner, std::move(job), PlannerPool::Clock::now()));
+    return id;
+}
+
+void JobRouter::on_evaluation(const envdesign::evaluation_t &answer) {
+    if (answer.coordinator != instance_)
+        return; // another coordinator's
+    auto kind = pool_.kind_of(answer.job_id);
+    if (kind) {
+        if (auto problem = evaluation_problem(answer, *kind)) {
+            bus_.reject(bus::EVALUATION, "job " + std::to_string(answer.job_id) + " from " +
+                                             answer.sender + ": " + *problem);
+            return; // the job stays out; a resend will ask again
+        }
+    }
+    std::vector<envdesign::job_t> to_send;
+    auto record = pool_.answer(answer.job_id, answer.sender, to_send, PlannerPool::Clock::now());
+    publish(to_send);
+    if (!record) {
+        bus_.log().debug("request {} | duplicate answer to job {} from {} ignored",
+                         answer.request_id, answer.job_id, answer.sender);
+        return;
+    }
+    std::lock_guard lock(inboxes_mutex_);
+    if (auto it = inboxes_.find(record->owner); it != inboxes_.end())
+        it->second->push(answer);
+}
+
+void JobRouter::on_heartbeat(const envdesign::planner_heartbeat_t &beat) {
+    if (beat.sender.empty() || beat.capacity < 1 || beat.period_ms < 1) {
+        bus_.reject(bus::HEARTBEAT, "a heartbeat without sender, capacity or period");
+        return;
+    }
+    PlannerPool::Events events;
+    publish(pool_.heartbeat(beat, PlannerPool::Clock::now(), &events));
+    log_events(events);
+}
+
+void JobRouter::tick() {
+    PlannerPool::Events events;
+    publish(pool_.expire(PlannerPool::Clock::now(), &events));
+    log_events(events);
+}
+
+void JobRouter::publish(const std::vector<envdesign::job_t> &jobs) {
+    for (const auto &job : jobs) {
+        if (job.attempt > 0)
+            bus_.log().info("request {} | job {} re-sent to {} (attempt {})", job.request_id,
+                            job.job_id, job.planner, job.attempt);
+        bus_.publish(bus::JOB, job);
+    }
+}
+
+void JobRouter::log_events(const PlannerPool::Events &events) {
+    for (const auto &event : events)
+        bus_.log().info("request - | {}", event);
+}
+
+} // namespace envdesign::cluster

@@ -1,0 +1,111 @@
+#include "cluster/lcm_evaluator.h"
+
+#include "cluster/wire.h"
+#include "envdesign/evaluation_t.hpp"
+
+#include <algorithm>
+
+namespace envdesign::cluster {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+Clock::duration seconds(double s) {
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+
+} // namespace
+
+LcmEvaluator::LcmEvaluator(const design::DesignProblem &problem, JobRouter &router,
+                           RemoteRequest request, const std::atomic<bool> &cancelled,
+                           double grace_s)
+    : problem_(problem), router_(router), request_(std::move(request)), cancelled_(cancelled),
+      grace_s_(grace_s), robot_bounds_(problem.weights.kappa > 0), owner_(router.open(inbox_)) {}
+
+LcmEvaluator::~LcmEvaluator() { router_.close(owner_); }
+
+void LcmEvaluator::evaluate(const std::vector<design::Configuration> &configurations,
+                            const design::Deadline &deadline,
+                            const design::EvaluationCallbacks &callbacks) {
+    design::Dispatcher dispatcher(configurations, static_cast<int>(problem_.tasks.size()),
+                                  robot_bounds_, callbacks);
+    Batch batch{configurations, dispatcher, {}};
+    std::optional<Clock::time_point> give_up_at;
+    while (true) {
+        if (!give_up_at)
+            send_jobs(batch, deadline);
+        in_flight_ = static_cast<int>(batch.in_flight.size());
+        if (batch.in_flight.empty())
+            break;
+        if (auto answer = inbox_.pop(Clock::now() + std::chrono::milliseconds(50)))
+            take(batch, *answer);
+        if (!give_up_at && (cancelled_ || error_))
+            give_up_at = Clock::now();
+        else if (!give_up_at && deadline.expired())
+            give_up_at = Clock::now() + seconds(grace_s_); // planners stop at it too
+        if (give_up_at && Clock::now() >= *give_up_at) {
+            give_up(batch);
+            break;
+        }
+    }
+    in_flight_ = 0;
+    if (error_)
+        throw *error_;
+    dispatcher.finish_rest();
+}
+
+design::EvaluatorCounters LcmEvaluator::counters() const { return counters_; }
+
+void LcmEvaluator::send_jobs(Batch &batch, const design::Deadline &deadline) {
+    while (static_cast<int>(batch.in_flight.size()) < window() && !deadline.expired() &&
+           !cancelled_) {
+        auto job = batch.dispatcher.next_job();
+        if (!job)
+            return;
+        envdesign::job_t message =
+            job_message(*job, batch.configurations[job->configuration], request_.request_id,
+                        request_.spec_hash, request_.heuristic, deadline);
+        batch.in_flight[router_.send(owner_, std::move(message))] = *job;
+    }
+}
+
+void LcmEvaluator::take(Batch &batch, const envdesign::evaluation_t &answer) {
+    auto it = batch.in_flight.find(answer.job_id);
+    if (it == batch.in_flight.end())
+        return; // of an earlier batch that stopped waiting for it
+    design::Job job = it->second;
+    batch.in_flight.erase(it);
+    ++answers_;
+    if (job.kind == design::JobKind::EXPLICABILITY)
+        ++counters_.task_evaluations;
+    counters_.planner_runs += answer.planner_runs;
+    counters_.cache_hits += answer.cache_hits;
+    counters_.groundings_skipped += answer.groundings_skipped;
+    counters_.planner_seconds += answer.planner_seconds;
+    if (answer.status == envdesign::evaluation_t::STATUS_BAD_INPUT ||
+        answer.status == envdesign::evaluation_t::STATUS_ERROR) {
+        bool bad_input = answer.status == envdesign::evaluation_t::STATUS_BAD_INPUT;
+        if (!error_)
+            error_.emplace(bad_input ? 2 : 1,
+                           bad_input ? answer.error
+                                     : "planner " + answer.sender + " failed: " + answer.error);
+        return;
+    }
+    batch.dispatcher.receive(job_answer(job, answer));
+}
+
+// Stops waiting: every job still out counts as out of time.
+void LcmEvaluator::give_up(Batch &batch) {
+    std::vector<std::int64_t> ids;
+    for (const auto &[id, job] : batch.in_flight) {
+        ids.push_back(id);
+        if (!error_)
+            batch.dispatcher.receive(design::JobAnswer{job, std::nullopt, {}});
+    }
+    batch.in_flight.clear();
+    router_.forget(ids);
+}
+
+int LcmEvaluator::window() const { return std::max(1, router_.pool().capacity()); }
+
+} // namespace envdesign::cluster

@@ -1,0 +1,282 @@
+#include "cluster/planner.h"
+
+#include "bus/channels.h"
+#include "bus/log.h"
+#include "cluster/wire.h"
+#include "design/local_evaluator.h"
+#include "envdesign/planner_heartbeat_t.hpp"
+#include "envdesign/spec_need_t.hpp"
+#include "pddl/parse_error.h"
+
+#include <algorithm>
+
+namespace envdesign::cluster {
+
+// One worker's evaluators, one per (spec, heuristic), each with its own plan cache.
+class WorkerCaches {
+public:
+    explicit WorkerCaches(int max_specs) : max_(max_specs) {}
+
+    design::LocalEvaluator &get(const std::shared_ptr<const LoadedSpec> &spec,
+                                std::int8_t heuristic) {
+        std::string key = spec->hash + "/" + std::to_string(heuristic);
+        auto it = entries_.find(key);
+        if (it == entries_.end()) {
+            if (static_cast<int>(entries_.size()) >= max_)
+                entries_.clear(); // rare: more specs in use than kept; start over
+            planning::PlannerOptions options;
+            options.heuristic = heuristic_kind(heuristic);
+            Entry entry{spec, std::make_unique<design::LocalEvaluator>(*spec->problem, 1, options)};
+            it = entries_.emplace(key, std::move(entry)).first;
+        }
+        return *it->second.evaluator;
+    }
+
+private:
+    struct Entry {
+        std::shared_ptr<const LoadedSpec> spec; // keeps the problem alive
+        std::unique_ptr<design::LocalEvaluator> evaluator;
+    };
+    int max_;
+    std::map<std::string, Entry> entries_;
+};
+
+Planner::Planner(bus::Bus &bus, PlannerConfig config)
+    : bus_(bus), config_(std::move(config)), specs_(config_.work_dir, config_.max_specs) {
+    subscriptions_.push_back(bus_.subscribe<envdesign::job_t>(
+        bus::JOB, [this](const envdesign::job_t &job) { on_job(job); }));
+    subscriptions_.push_back(bus_.subscribe<envdesign::spec_chunk_t>(
+        bus::SPEC, [this](const envdesign::spec_chunk_t &chunk) { on_chunk(chunk); }));
+    for (int i = 0; i < std::max(1, config_.workers); ++i)
+        workers_.emplace_back([this] { work(); });
+    heartbeat(false);
+}
+
+Planner::~Planner() {
+    subscriptions_.clear();
+    {
+        std::lock_guard lock(mutex_);
+        closing_ = true;
+    }
+    work_ready_.notify_all();
+    for (auto &worker : workers_)
+        worker.join();
+}
+
+void Planner::tick() {
+    auto now = Clock::now();
+    if (std::chrono::duration<double>(now - last_beat_).count() >= config_.heartbeat_period_s)
+        heartbeat(stopping_);
+    ask_for_specs(now);
+}
+
+void Planner::stop() {
+    stopping_ = true;
+    heartbeat(true);
+    bus_.log().info("request - | stopping: no more jobs");
+}
+
+PlannerStats Planner::stats() const {
+    std::lock_guard lock(mutex_);
+    return stats_;
+}
+
+void Planner::on_job(const envdesign::job_t &job) {
+    if (job.planner != config_.instance || stopping_)
+        return; // another planner's
+    if (job.spec_hash.size() != 64 || job.sender.empty()) {
+        bus_.reject(bus::JOB, "job " + std::to_string(job.job_id) + " without spec or sender");
+        return;
+    }
+    std::unique_lock lock(mutex_);
+    if (auto it = answers_.find(job.job_id); it != answers_.end()) {
+        ++stats_.answers_repeated;
+        envdesign::evaluation_t answer = it->second;
+        lock.unlock();
+        bus_.log().info("request {} | job {} answered again (attempt {})", job.request_id,
+                        job.job_id, job.attempt);
+        bus_.publish(bus::EVALUATION, answer);
+        return;
+    }
+    if (!held_.insert(job.job_id).second) {
+        ++stats_.duplicates;
+        return;
+    }
+    Pending pending{job, Clock::now()};
+    if (specs_.complete(job.spec_hash)) {
+        queue_.push_back(std::move(pending));
+        lock.unlock();
+        work_ready_.notify_one();
+        return;
+    }
+    parked_[job.spec_hash].push_back(std::move(pending));
+    asked_.try_emplace(job.spec_hash, job.sender, Clock::time_point{});
+    lock.unlock();
+    ask_for_specs(Clock::now());
+}
+
+void Planner::on_chunk(const envdesign::spec_chunk_t &chunk) {
+    std::string why;
+    auto added = specs_.add_chunk(chunk, why);
+    if (added == PlannerSpecs::Added::BAD) {
+        bus_.reject(bus::SPEC, "spec chunk from " + chunk.sender + ": " + why);
+        return;
+    }
+    if (added != PlannerSpecs::Added::COMPLETED)
+        return;
+    std::vector<Pending> ready;
+    {
+        std::lock_guard lock(mutex_);
+        if (auto it = parked_.find(chunk.spec_hash); it != parked_.end()) {
+            ready = std::move(it->second);
+            parked_.erase(it);
+        }
+        asked_.erase(chunk.spec_hash);
+        for (auto &p : ready)
+            queue_.push_back(std::move(p));
+    }
+    bus_.log().info("request {} | spec {} received", chunk.request_id,
+                    chunk.spec_hash.substr(0, 12));
+    work_ready_.notify_all();
+}
+
+// Asks the coordinator of parked jobs for their spec, again after need_retry_s.
+void Planner::ask_for_specs(Clock::time_point now) {
+    std::vector<envdesign::spec_need_t> needs;
+    {
+        std::lock_guard lock(mutex_);
+        for (auto &[hash, asked] : asked_) {
+            if (std::chrono::duration<double>(now - asked.second).count() < config_.need_retry_s)
+                continue;
+            asked.second = now;
+            envdesign::spec_need_t need{};
+            need.utime = bus::now_utime();
+            auto parked = parked_.find(hash);
+            need.request_id = parked == parked_.end() || parked->second.empty()
+                                  ? 0
+                                  : parked->second.front().job.request_id;
+            need.sender = config_.instance;
+            need.coordinator = asked.first;
+            need.spec_hash = hash;
+            for (int i : specs_.missing(hash))
+                need.missing.push_back(static_cast<std::int16_t>(i));
+            need.num_missing = static_cast<std::int16_t>(need.missing.size());
+            needs.push_back(std::move(need));
+        }
+    }
+    for (const auto &need : needs) {
+        bus_.log().info("request {} | asking {} for spec {}", need.request_id, need.coordinator,
+                        need.spec_hash.substr(0, 12));
+        bus_.publish(bus::SPEC_NEED, need);
+    }
+}
+
+void Planner::heartbeat(bool stopping) {
+    envdesign::planner_heartbeat_t beat{};
+    beat.utime = bus::now_utime();
+    beat.sender = config_.instance;
+    beat.period_ms = static_cast<std::int32_t>(config_.heartbeat_period_s * 1000);
+    beat.capacity = static_cast<std::int16_t>(std::max(1, config_.workers));
+    {
+        std::lock_guard lock(mutex_);
+        for (auto id : held_) {
+            if (beat.jobs.size() >= 32767)
+                break;
+            beat.jobs.push_back(id);
+        }
+        beat.jobs_done = stats_.jobs_done;
+        beat.busy_seconds = stats_.busy_seconds;
+    }
+    beat.num_jobs = static_cast<std::int16_t>(beat.jobs.size());
+    beat.specs_cached = specs_.size();
+    beat.malformed = bus_.malformed();
+    beat.stopping = stopping;
+    bus_.publish(bus::HEARTBEAT, beat);
+    last_beat_ = Clock::now();
+}
+
+void Planner::work() {
+    WorkerCaches caches(config_.max_specs);
+    while (true) {
+        Pending pending;
+        {
+            std::unique_lock lock(mutex_);
+            work_ready_.wait(lock, [&] { return closing_ || !queue_.empty(); });
+            if (queue_.empty())
+                return;
+            pending = std::move(queue_.front());
+            queue_.pop_front();
+        }
+        auto start = Clock::now();
+        envdesign::evaluation_t answer = evaluate(pending, caches);
+        answer.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        bus_.publish(bus::EVALUATION, answer);
+        answered(answer, answer.seconds);
+    }
+}
+
+void Planner::answered(const envdesign::evaluation_t &answer, double seconds) {
+    std::lock_guard lock(mutex_);
+    held_.erase(answer.job_id); // after publishing: a heartbeat never misses a job in between
+    ++stats_.jobs_done;
+    stats_.busy_seconds += seconds;
+    answers_[answer.job_id] = answer;
+    answer_order_.push_back(answer.job_id);
+    while (static_cast<int>(answer_order_.size()) > config_.answers_kept) {
+        answers_.erase(answer_order_.front());
+        answer_order_.pop_front();
+    }
+}
+
+envdesign::evaluation_t Planner::evaluate(const Pending &pending, WorkerCaches &caches) {
+    const envdesign::job_t &job = pending.job;
+    envdesign::evaluation_t answer{};
+    answer.utime = bus::now_utime();
+    answer.request_id = job.request_id;
+    answer.sender = config_.instance;
+    answer.coordinator = job.sender;
+    answer.job_id = job.job_id;
+    answer.kind = job.kind;
+    try {
+        auto spec = specs_.load(job.spec_hash);
+        if (!spec || !spec->problem) {
+            answer.status = envdesign::evaluation_t::STATUS_BAD_INPUT;
+            answer.error = spec ? spec->error : "the spec was dropped";
+            return answer;
+        }
+        if (auto problem = job_problem(job, *spec->problem)) {
+            bus_.reject(bus::JOB, "job " + std::to_string(job.job_id) + ": " + *problem);
+            answer.status = envdesign::evaluation_t::STATUS_BAD_INPUT;
+            answer.error = "bad job: " + *problem;
+            return answer;
+        }
+        design::LocalEvaluator &evaluator = caches.get(spec, job.heuristic);
+        // The time left when the job arrived, less its wait here; 0 stays "no limit".
+        double waited = std::chrono::duration<double>(Clock::now() - pending.received).count();
+        design::Deadline deadline = design::Deadline::in(
+            job.time_limit_s > 0 ? std::max(job.time_limit_s - waited, 1e-3) : 0);
+        design::Configuration configuration = configuration_of(job);
+        design::EvaluatorCounters before = evaluator.counters();
+        if (job.kind == envdesign::job_t::KIND_ROBOT_BOUND)
+            put_robot_bound(evaluator.robot_cost_bound(configuration, job.task, deadline), answer);
+        else
+            put_explicability(evaluator.evaluate_task(configuration, job.task, deadline), answer);
+        design::EvaluatorCounters after = evaluator.counters();
+        answer.planner_runs = static_cast<std::int32_t>(after.planner_runs - before.planner_runs);
+        answer.cache_hits = static_cast<std::int32_t>(after.cache_hits - before.cache_hits);
+        answer.groundings_skipped =
+            static_cast<std::int32_t>(after.groundings_skipped - before.groundings_skipped);
+        answer.planner_seconds = after.planner_seconds - before.planner_seconds;
+    } catch (const pddl::ParseError &e) {
+        answer.status = envdesign::evaluation_t::STATUS_BAD_INPUT;
+        answer.error = e.what();
+    } catch (const std::exception &e) {
+        answer.status = envdesign::evaluation_t::STATUS_ERROR;
+        answer.error = e.what();
+    }
+    if (answer.status >= envdesign::evaluation_t::STATUS_BAD_INPUT)
+        bus_.log().warn("request {} | job {} failed: {}", job.request_id, job.job_id, answer.error);
+    return answer;
+}
+
+} // namespace envdesign::cluster

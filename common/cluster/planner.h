@@ -1,0 +1,92 @@
+#pragma once
+// The planner service's core (services/planner): does the jobs addressed to it on
+// ENVDESIGN_JOB with `workers` threads and answers on ENVDESIGN_EVALUATION; announces
+// itself, its capacity and the jobs it holds on ENVDESIGN_HEARTBEAT. Stateless as far as
+// the system is concerned: any planner can do any job, and one may start or stop at any
+// time; what it keeps (specs, its plan caches, recent answers) only saves work.
+//
+//   - A job naming a spec it lacks waits while the planner asks the job's coordinator for
+//     it (ENVDESIGN_SPEC_NEED, again every need_retry_s).
+//   - A job it holds already is a duplicate and ignored; one it answered lately (the answer
+//     was lost) is answered again from memory.
+//   - Each worker has its own plan cache per spec, so a job's counters are its own.
+//
+//   Planner planner(bus, config);
+//   while (running) { bus.handle(20ms); planner.tick(); }
+//   planner.stop();   // a last heartbeat says it is going; running jobs finish
+
+#include "bus/bus.h"
+#include "cluster/planner_specs.h"
+#include "envdesign/evaluation_t.hpp"
+#include "envdesign/job_t.hpp"
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <set>
+#include <thread>
+
+namespace envdesign::cluster {
+
+struct PlannerConfig {
+    std::string instance;
+    std::string work_dir;
+    int workers = 1;
+    double heartbeat_period_s = 0.2;
+    double need_retry_s = 0.3;
+    int max_specs = 4;
+    int answers_kept = 4096;
+};
+
+struct PlannerStats {
+    long long jobs_done = 0;
+    long long answers_repeated = 0; // answers sent again from memory
+    long long duplicates = 0;       // jobs received while held
+    double busy_seconds = 0;
+};
+
+class Planner {
+public:
+    Planner(bus::Bus &bus, PlannerConfig config);
+    ~Planner(); // stops and joins the workers (running jobs finish first)
+
+    void tick(); // bus thread
+    void stop(); // takes no more jobs and says so
+    PlannerStats stats() const;
+
+private:
+    using Clock = std::chrono::steady_clock;
+    struct Pending {
+        envdesign::job_t job;
+        Clock::time_point received;
+    };
+
+    void on_job(const envdesign::job_t &job);
+    void on_chunk(const envdesign::spec_chunk_t &chunk);
+    void ask_for_specs(Clock::time_point now);
+    void heartbeat(bool stopping);
+    void work();
+    envdesign::evaluation_t evaluate(const Pending &pending, class WorkerCaches &caches);
+    void answered(const envdesign::evaluation_t &answer, double seconds);
+
+    bus::Bus &bus_;
+    PlannerConfig config_;
+    PlannerSpecs specs_;
+    mutable std::mutex mutex_;
+    std::condition_variable work_ready_;
+    std::deque<Pending> queue_;
+    std::map<std::string, std::vector<Pending>> parked_; // by spec hash
+    std::map<std::string, std::pair<std::string, Clock::time_point>>
+        asked_; // hash -> coordinator, when
+    std::set<std::int64_t> held_;
+    std::map<std::int64_t, envdesign::evaluation_t> answers_;
+    std::deque<std::int64_t> answer_order_;
+    PlannerStats stats_;
+    bool closing_ = false;
+    std::atomic<bool> stopping_{false};
+    Clock::time_point last_beat_{};
+    std::vector<std::thread> workers_;
+    std::vector<bus::Subscription> subscriptions_;
+};
+
+} // namespace envdesign::cluster

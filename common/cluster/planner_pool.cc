@@ -1,0 +1,233 @@
+#include "cluster/planner_pool.h"
+
+#include "bus/log.h"
+
+#include <algorithm>
+
+namespace envdesign::cluster {
+
+std::vector<envdesign::job_t> PlannerPool::submit(std::uint64_t owner, envdesign::job_t job,
+                                                  Clock::time_point now) {
+    std::lock_guard lock(mutex_);
+    std::int64_t id = job.job_id;
+    jobs_[id] = JobRecord{owner, std::move(job), {}, {}, {}};
+    queue_.push_back(id);
+    return assign(now);
+}
+
+std::vector<envdesign::job_t> PlannerPool::heartbeat(const envdesign::planner_heartbeat_t &beat,
+                                                     Clock::time_point now, Events *events) {
+    std::lock_guard lock(mutex_);
+    if (beat.stopping) {
+        drop_planner(beat.sender, events, "is stopping");
+        return assign(now);
+    }
+    auto [it, joined] = planners_.try_emplace(beat.sender);
+    if (joined) {
+        ++counters_.planners_joined;
+        if (events)
+            events->push_back("planner " + beat.sender + " joined with " +
+                              std::to_string(beat.capacity) + " worker(s)");
+    }
+    it->second.slots = std::max(1, static_cast<int>(beat.capacity)) * config_.jobs_per_slot;
+    it->second.last_beat = now;
+    std::set<std::int64_t> held(beat.jobs.begin(), beat.jobs.end());
+    auto lost_before = now - std::chrono::duration_cast<Clock::duration>(
+                                 std::chrono::duration<double>(config_.lost_after_s));
+    std::vector<std::int64_t> lost;
+    for (auto &[id, record] : jobs_)
+        if (record.planner == beat.sender && record.sent < lost_before && !held.count(id))
+            lost.push_back(id);
+    for (std::int64_t id : lost)
+        requeue(id);
+    return assign(now);
+}
+
+std::optional<JobRecord> PlannerPool::answer(std::int64_t job_id, const std::string &from,
+                                             std::vector<envdesign::job_t> &to_send,
+                                             Clock::time_point now) {
+    std::lock_guard lock(mutex_);
+    auto it = jobs_.find(job_id);
+    if (it == jobs_.end()) {
+        ++counters_.duplicates; // answered already, or never ours
+        if (auto a = answered_.find(job_id); a != answered_.end())
+            if (auto owner = owners_.find(a->second); owner != owners_.end())
+                ++owner->second.duplicates;
+        return std::nullopt;
+    }
+    // A late answer to a job queued again for another planner still counts.
+    queue_.erase(std::remove(queue_.begin(), queue_.end(), job_id), queue_.end());
+    JobRecord record = std::move(it->second);
+    release(record);
+    jobs_.erase(it);
+    counters_.answered_by.insert(from);
+    owners_[record.owner].answered_by.insert(from);
+    remember_answered(job_id, record.owner);
+    to_send = assign(now);
+    return record;
+}
+
+std::vector<envdesign::job_t> PlannerPool::expire(Clock::time_point now, Events *events) {
+    std::lock_guard lock(mutex_);
+    auto silent_since = now - std::chrono::duration_cast<Clock::duration>(
+                                  std::chrono::duration<double>(config_.planner_timeout_s));
+    std::vector<std::string> gone;
+    for (const auto &[name, planner] : planners_)
+        if (planner.last_beat < silent_since)
+            gone.push_back(name);
+    for (const auto &name : gone)
+        drop_planner(name, events, "went silent");
+    return assign(now);
+}
+
+void PlannerPool::forget(const std::vector<std::int64_t> &job_ids) {
+    std::lock_guard lock(mutex_);
+    for (std::int64_t id : job_ids) {
+        auto it = jobs_.find(id);
+        if (it == jobs_.end())
+            continue;
+        release(it->second);
+        jobs_.erase(it);
+        queue_.erase(std::remove(queue_.begin(), queue_.end(), id), queue_.end());
+    }
+}
+
+std::optional<std::int8_t> PlannerPool::kind_of(std::int64_t job_id) const {
+    std::lock_guard lock(mutex_);
+    auto it = jobs_.find(job_id);
+    return it == jobs_.end() ? std::nullopt : std::optional<std::int8_t>(it->second.message.kind);
+}
+
+int PlannerPool::capacity() const {
+    std::lock_guard lock(mutex_);
+    int slots = 0;
+    for (const auto &[name, planner] : planners_)
+        slots += planner.slots;
+    return slots;
+}
+
+int PlannerPool::live_planners() const {
+    std::lock_guard lock(mutex_);
+    return static_cast<int>(planners_.size());
+}
+
+int PlannerPool::jobs_in_flight(std::uint64_t owner) const {
+    std::lock_guard lock(mutex_);
+    return static_cast<int>(std::count_if(jobs_.begin(), jobs_.end(),
+                                          [&](const auto &j) { return j.second.owner == owner; }));
+}
+
+void PlannerPool::forget_owner(std::uint64_t owner) {
+    std::vector<std::int64_t> ids;
+    {
+        std::lock_guard lock(mutex_);
+        for (const auto &[id, record] : jobs_)
+            if (record.owner == owner)
+                ids.push_back(id);
+        owners_.erase(owner);
+    }
+    forget(ids);
+}
+
+PoolCounters PlannerPool::counters() const {
+    std::lock_guard lock(mutex_);
+    return counters_;
+}
+
+PoolCounters PlannerPool::counters(std::uint64_t owner) const {
+    std::lock_guard lock(mutex_);
+    auto it = owners_.find(owner);
+    return it == owners_.end() ? PoolCounters{} : it->second;
+}
+
+void PlannerPool::remember_answered(std::int64_t job_id, std::uint64_t owner) {
+    constexpr std::size_t REMEMBERED = 65536;
+    answered_[job_id] = owner;
+    answered_order_.push_back(job_id);
+    if (answered_order_.size() > REMEMBERED) {
+        answered_.erase(answered_order_.front());
+        answered_order_.pop_front();
+    }
+}
+
+// Sends queued jobs while some live planner has a free slot.
+std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
+    std::vector<envdesign::job_t> out;
+    while (!queue_.empty()) {
+        JobRecord &record = jobs_.at(queue_.front());
+        auto planner = pick_planner(record);
+        if (!planner)
+            break;
+        queue_.pop_front();
+        ++planners_[*planner].holding;
+        record.planner = *planner;
+        record.sent = now;
+        record.message.planner = *planner;
+        record.message.attempt = static_cast<std::int16_t>(record.tried.size());
+        record.message.utime = bus::now_utime();
+        PoolCounters &owner = owners_[record.owner];
+        if (!record.tried.empty()) {
+            ++counters_.jobs_resent;
+            ++owner.jobs_resent;
+        }
+        record.tried.insert(*planner);
+        ++counters_.jobs_sent;
+        ++owner.jobs_sent;
+        out.push_back(record.message);
+    }
+    return out;
+}
+
+// Round robin over planners with a free slot, preferring one that has not had this job.
+std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record) {
+    std::optional<std::string> fallback;
+    auto start = planners_.upper_bound(last_pick_);
+    for (std::size_t i = 0; i < planners_.size(); ++i, ++start) {
+        if (start == planners_.end())
+            start = planners_.begin();
+        const auto &[name, planner] = *start;
+        if (planner.holding >= planner.slots)
+            continue;
+        if (!record.tried.count(name)) {
+            last_pick_ = name;
+            return name;
+        }
+        if (!fallback)
+            fallback = name;
+    }
+    if (fallback)
+        last_pick_ = *fallback;
+    return fallback;
+}
+
+void PlannerPool::requeue(std::int64_t job_id) {
+    JobRecord &record = jobs_.at(job_id);
+    release(record);
+    queue_.push_front(job_id); // resends first: they are the oldest work
+}
+
+void PlannerPool::release(JobRecord &record) {
+    if (record.planner.empty())
+        return;
+    if (auto it = planners_.find(record.planner); it != planners_.end() && it->second.holding > 0)
+        --it->second.holding;
+    record.planner.clear();
+}
+
+void PlannerPool::drop_planner(const std::string &name, Events *events, const char *why) {
+    if (!planners_.count(name))
+        return;
+    std::vector<std::int64_t> held;
+    for (const auto &[id, record] : jobs_)
+        if (record.planner == name)
+            held.push_back(id);
+    for (std::int64_t id : held)
+        requeue(id);
+    planners_.erase(name);
+    ++counters_.planners_lost;
+    if (events)
+        events->push_back("planner " + name + " " + why + "; " + std::to_string(held.size()) +
+                          " job(s) go to others");
+}
+
+} // namespace envdesign::cluster

@@ -1,0 +1,114 @@
+#pragma once
+// The coordinator's view of its planners and of every job it has sent them: which planners
+// are alive (heartbeats) and how many jobs each may hold, which planner holds which job,
+// and what to (re-)send. No transport: functions return the job_t messages to publish.
+//
+// Rules:
+//   - a job goes to a live planner with a free slot, round robin; with no free slot it
+//     waits in a FIFO queue and goes out as soon as a slot frees;
+//   - a planner that has been silent for planner_timeout_s, or says it is stopping, is
+//     gone: its jobs are queued again (attempt + 1), preferably for another planner;
+//   - a job the planner's heartbeat does not list although it was sent lost_after_s before
+//     that heartbeat arrived was lost (or its answer was): it is sent again (same job_id);
+//   - the first answer to a job wins; later ones are duplicates.
+// Thread-safe.
+
+#include "envdesign/job_t.hpp"
+#include "envdesign/planner_heartbeat_t.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace envdesign::cluster {
+
+struct PoolConfig {
+    double planner_timeout_s = 1.0;
+    double lost_after_s = 0.3;
+    int jobs_per_slot = 1; // jobs in flight per planner worker (> 1 hides the round trip)
+};
+
+struct PoolCounters {
+    long long jobs_sent = 0;   // sends, re-sends included
+    long long jobs_resent = 0; // re-sends
+    long long duplicates = 0;  // answers to jobs answered before (or never sent)
+    long long planners_joined = 0;
+    long long planners_lost = 0;
+    std::set<std::string> answered_by; // planners that answered
+};
+
+// A job the pool tracks; `owner` is the coordinator's id of the request it serves.
+struct JobRecord {
+    std::uint64_t owner = 0;
+    envdesign::job_t message;
+    std::string planner; // holding it; empty while queued
+    std::chrono::steady_clock::time_point sent;
+    std::set<std::string> tried;
+};
+
+class PlannerPool {
+public:
+    using Clock = std::chrono::steady_clock;
+    using Events = std::vector<std::string>; // "planner X joined" ..., for the caller's log
+
+    explicit PlannerPool(PoolConfig config) : config_(config) {}
+
+    // Queues `job` (job_id set by the caller) for `owner`; returns what to publish now.
+    std::vector<envdesign::job_t> submit(std::uint64_t owner, envdesign::job_t job,
+                                         Clock::time_point now);
+    std::vector<envdesign::job_t> heartbeat(const envdesign::planner_heartbeat_t &beat,
+                                            Clock::time_point now, Events *events = nullptr);
+    // The record of `job_id` if this is its first answer (it is then forgotten); nullopt for
+    // a duplicate or a job this pool never sent. `to_send` gets jobs the freed slot takes.
+    std::optional<JobRecord> answer(std::int64_t job_id, const std::string &from,
+                                    std::vector<envdesign::job_t> &to_send, Clock::time_point now);
+    // Planners silent too long are gone; returns the resends.
+    std::vector<envdesign::job_t> expire(Clock::time_point now, Events *events = nullptr);
+    // Forgets jobs (their request ended or stopped waiting for them).
+    void forget(const std::vector<std::int64_t> &job_ids);
+    // Forgets everything about `owner`'s jobs.
+    void forget_owner(std::uint64_t owner);
+
+    // The kind of an outstanding job, to check its answer against.
+    std::optional<std::int8_t> kind_of(std::int64_t job_id) const;
+    int capacity() const; // job slots of the live planners
+    int live_planners() const;
+    int jobs_in_flight(std::uint64_t owner) const;
+    PoolCounters counters() const;
+    // The counters of `owner`'s jobs alone (planners joined and lost stay 0).
+    PoolCounters counters(std::uint64_t owner) const;
+
+private:
+    struct Planner {
+        int slots = 1;
+        int holding = 0;
+        Clock::time_point last_beat;
+    };
+
+    std::vector<envdesign::job_t> assign(Clock::time_point now);
+    std::optional<std::string> pick_planner(const JobRecord &record);
+    void requeue(std::int64_t job_id);
+    void release(JobRecord &record);
+    void drop_planner(const std::string &name, Events *events, const char *why);
+    void remember_answered(std::int64_t job_id, std::uint64_t owner);
+
+    PoolConfig config_;
+    mutable std::mutex mutex_;
+    std::map<std::string, Planner> planners_;
+    std::string last_pick_; // round robin: the next pick comes after this name
+    std::map<std::int64_t, JobRecord> jobs_;
+    std::deque<std::int64_t> queue_;
+    PoolCounters counters_;
+    std::map<std::uint64_t, PoolCounters> owners_;
+    // Recently answered jobs and their owners, so that duplicates count for their request.
+    std::map<std::int64_t, std::uint64_t> answered_;
+    std::deque<std::int64_t> answered_order_;
+};
+
+} // namespace envdesign::cluster

@@ -1,0 +1,171 @@
+#include "cluster/request_run.h"
+
+#include "bus/channels.h"
+#include "bus/codec.h"
+#include "bus/log.h"
+#include "cluster/lcm_evaluator.h"
+#include "cluster/spec_chunks.h"
+#include "cluster/spec_loader.h"
+#include "cluster/wire.h"
+#include "design/relevance.h"
+#include "pddl/parse_error.h"
+
+namespace envdesign::cluster {
+namespace {
+
+using envdesign::design_progress_t;
+using envdesign::design_request_t;
+
+} // namespace
+
+RequestRun::RequestRun(RunContext context, design_request_t request)
+    : context_(std::move(context)), request_(std::move(request)),
+      name_(bus::request_name(request_.sender, request_.request_id)) {
+    progress_.request_id = request_.request_id;
+    progress_.client = request_.sender;
+    progress_.state = design_progress_t::STATE_QUEUED;
+    progress_.best_objective = design::INF;
+}
+
+RequestRun::~RequestRun() {
+    cancel();
+    if (thread_.joinable())
+        thread_.join();
+}
+
+void RequestRun::start() {
+    thread_ = std::thread([this] { run(); });
+}
+
+void RequestRun::cancel() {
+    cancelled_ = true;
+    std::lock_guard lock(mutex_);
+    if (evaluator_)
+        evaluator_->wake();
+}
+
+design_progress_t RequestRun::progress() const {
+    std::lock_guard lock(mutex_);
+    design_progress_t p = progress_;
+    p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - accepted_).count();
+    if (evaluator_) {
+        p.evaluations = evaluator_->answers();
+        p.jobs_in_flight = evaluator_->in_flight();
+    }
+    return p;
+}
+
+envdesign::design_result_t RequestRun::result() const {
+    std::lock_guard lock(mutex_);
+    return result_;
+}
+
+void RequestRun::run() {
+    std::string hash;
+    auto &log = context_.bus.log();
+    try {
+        set_state(design_progress_t::STATE_LOADING);
+        design::DesignProblem problem = load_spec(request_.spec, context_.work_dir);
+        std::string bytes = bus::encode_message(request_.spec);
+        hash = content_hash(bytes);
+        for (const auto &chunk : context_.specs.add(hash, bytes, request_.request_id))
+            context_.bus.publish(bus::SPEC, chunk);
+        log.info("request {} | spec {} loaded: {} task(s), {} modification(s), {} bytes", name_,
+                 hash.substr(0, 12), problem.tasks.size(), problem.modifications.size(),
+                 bytes.size());
+        set_state(design_progress_t::STATE_SEARCHING);
+        search(problem, hash);
+    } catch (const pddl::ParseError &e) {
+        finish(error_result(2, e.what()));
+    } catch (const RemoteError &e) {
+        finish(error_result(e.exit_code(), e.what()));
+    } catch (const std::bad_alloc &) {
+        finish(error_result(4, "out of memory"));
+    } catch (const std::exception &e) {
+        finish(error_result(1, e.what()));
+    }
+    if (!hash.empty())
+        context_.specs.release(hash);
+}
+
+void RequestRun::search(const design::DesignProblem &problem, const std::string &hash) {
+    LcmEvaluator evaluator(problem, context_.router,
+                           {request_.request_id, hash, request_.heuristic}, cancelled_,
+                           context_.grace_s);
+    {
+        std::lock_guard lock(mutex_);
+        evaluator_ = &evaluator;
+    }
+    design::DesignSearchOptions options = this->options(problem);
+    planning::PlannerOptions planner;
+    planner.heuristic = heuristic_kind(request_.heuristic);
+    design::PlanCache relevance_cache(planner); // --prune relevant plans on the coordinator
+    if (request_.prune == design_request_t::PRUNE_RELEVANT)
+        options.relevant = [&](const design::Configuration &c) {
+            return cancelled_ ? std::vector<int>{}
+                              : design::relevant_modifications(problem, c, relevance_cache,
+                                                               options.deadline);
+        };
+    auto on_progress = [&](const design::SearchProgress &p) {
+        std::lock_guard lock(mutex_);
+        progress_.done = p.done;
+        progress_.total = p.total;
+        progress_.best_objective = p.best_objective;
+        progress_.planner_runs = p.planner_runs;
+        progress_.cache_hits = p.cache_hits;
+    };
+    design::DesignResult result;
+    try {
+        result = design::search_design(problem, evaluator, options, on_progress);
+    } catch (...) {
+        std::lock_guard lock(mutex_);
+        evaluator_ = nullptr;
+        throw;
+    }
+    TransportCounters transport;
+    {
+        std::lock_guard lock(mutex_);
+        evaluator_ = nullptr;
+    }
+    PoolCounters pool = evaluator.transport();
+    transport.jobs_sent = pool.jobs_sent;
+    transport.jobs_resent = pool.jobs_resent;
+    transport.duplicates_ignored = pool.duplicates;
+    transport.planners_used = static_cast<int>(pool.answered_by.size());
+    finish(result_message(problem, result, transport));
+}
+
+design::DesignSearchOptions RequestRun::options(const design::DesignProblem &problem) const {
+    design::DesignSearchOptions options;
+    options.max_design_size =
+        request_.max_design_size >= 0 ? request_.max_design_size : problem.max_design_size;
+    double seconds = request_.time_limit_s >= 0 ? request_.time_limit_s : problem.time_limit_s;
+    options.deadline = design::Deadline::in(seconds);
+    options.batch_size = std::max(8, 4 * context_.router.pool().capacity());
+    return options;
+}
+
+void RequestRun::set_state(std::int8_t state) {
+    std::lock_guard lock(mutex_);
+    progress_.state = state;
+}
+
+void RequestRun::finish(envdesign::design_result_t result) {
+    result.request_id = request_.request_id;
+    result.client = request_.sender;
+    auto &log = context_.bus.log();
+    if (result.status == "error")
+        log.warn("request {} | failed (exit {}): {}", name_, result.exit_code, result.error);
+    else
+        log.info("request {} | {}: objective {} after {} configuration(s) in {:.3f} s", name_,
+                 result.status, result.best.objective, result.counters.configurations_evaluated,
+                 result.counters.seconds);
+    {
+        std::lock_guard lock(mutex_);
+        result_ = std::move(result);
+        progress_.state = design_progress_t::STATE_DONE;
+    }
+    finished_ = true;
+}
+
+} // namespace envdesign::cluster

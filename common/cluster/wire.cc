@@ -1,0 +1,212 @@
+#include "cluster/wire.h"
+
+#include "bus/log.h"
+#include "design/objective.h"
+#include "envdesign/design_request_t.hpp"
+
+#include <cmath>
+
+namespace envdesign::cluster {
+namespace {
+
+using envdesign::evaluation_t;
+
+bool valid_cost(double v) { return !std::isnan(v) && v >= 0; } // +inf allowed
+
+envdesign::design_terms_t terms_message(const design::Objective &objective) {
+    envdesign::design_terms_t t;
+    t.objective = objective.value;
+    t.inexplicability = objective.terms.inexplicability;
+    t.design_cost = objective.terms.design_cost;
+    t.robot_cost = objective.terms.robot_cost;
+    return t;
+}
+
+envdesign::task_result_t task_message(const design::DesignTask &task,
+                                      const design::TaskExplicability &t) {
+    envdesign::task_result_t m;
+    m.name = task.name;
+    m.probability = task.probability;
+    m.ie = t.ie;
+    m.robot_cost = t.robot_cost;
+    m.human_plan_cost = t.human_plan_cost;
+    m.has_human_optimal_cost = t.human_optimal_cost.has_value();
+    m.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
+    m.plan = t.plan;
+    m.plan_length = static_cast<std::int16_t>(m.plan.size());
+    return m;
+}
+
+envdesign::design_counters_t counters_message(const design::DesignCounters &c,
+                                              const TransportCounters &transport) {
+    envdesign::design_counters_t m;
+    m.configurations_total = c.configurations_total;
+    m.configurations_evaluated = c.configurations_evaluated;
+    m.configurations_abandoned = c.configurations_abandoned;
+    m.configurations_skipped = c.configurations_skipped;
+    m.configurations_pruned = c.configurations_pruned;
+    m.task_evaluations = c.evaluator.task_evaluations;
+    m.planner_runs = c.evaluator.planner_runs;
+    m.cache_hits = c.evaluator.cache_hits;
+    m.groundings_skipped = c.evaluator.groundings_skipped;
+    m.planner_seconds = c.evaluator.planner_seconds;
+    m.seconds = c.seconds;
+    m.jobs_sent = transport.jobs_sent;
+    m.jobs_resent = transport.jobs_resent;
+    m.duplicates_ignored = transport.duplicates_ignored;
+    m.planners_used = static_cast<std::int16_t>(transport.planners_used);
+    return m;
+}
+
+} // namespace
+
+heuristics::HeuristicKind heuristic_kind(std::int8_t heuristic) {
+    switch (heuristic) {
+    case envdesign::design_request_t::HEURISTIC_HMAX:
+        return heuristics::HeuristicKind::HMAX;
+    case envdesign::design_request_t::HEURISTIC_BLIND:
+        return heuristics::HeuristicKind::BLIND;
+    default:
+        return heuristics::HeuristicKind::LMCUT;
+    }
+}
+
+envdesign::job_t job_message(const design::Job &job, const design::Configuration &configuration,
+                             std::int64_t request_id, const std::string &spec_hash,
+                             std::int8_t heuristic, const design::Deadline &deadline) {
+    envdesign::job_t m{};
+    m.request_id = request_id;
+    m.spec_hash = spec_hash;
+    m.kind = job.kind == design::JobKind::ROBOT_BOUND ? envdesign::job_t::KIND_ROBOT_BOUND
+                                                      : envdesign::job_t::KIND_EXPLICABILITY;
+    m.task = static_cast<std::int16_t>(job.task);
+    m.modifications.assign(configuration.begin(), configuration.end());
+    m.num_modifications = static_cast<std::int16_t>(m.modifications.size());
+    m.heuristic = heuristic;
+    m.time_limit_s = deadline.remaining_seconds();
+    return m;
+}
+
+std::optional<std::string> job_problem(const envdesign::job_t &job,
+                                       const design::DesignProblem &problem) {
+    if (job.kind != envdesign::job_t::KIND_ROBOT_BOUND &&
+        job.kind != envdesign::job_t::KIND_EXPLICABILITY)
+        return "unknown job kind " + std::to_string(job.kind);
+    if (job.task < 0 || job.task >= static_cast<int>(problem.tasks.size()))
+        return "task index " + std::to_string(job.task) + " out of range";
+    int previous = -1;
+    for (int m : job.modifications) {
+        if (m <= previous || m >= static_cast<int>(problem.modifications.size()))
+            return "the configuration is not ascending modification indices in range";
+        previous = m;
+    }
+    if (job.heuristic < envdesign::design_request_t::HEURISTIC_LMCUT ||
+        job.heuristic > envdesign::design_request_t::HEURISTIC_BLIND)
+        return "unknown heuristic " + std::to_string(job.heuristic);
+    if (!(job.time_limit_s >= 0) || std::isinf(job.time_limit_s))
+        return "the time limit is not a non-negative number";
+    return std::nullopt;
+}
+
+design::Configuration configuration_of(const envdesign::job_t &job) {
+    return design::Configuration(job.modifications.begin(), job.modifications.end());
+}
+
+std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t kind) {
+    if (e.kind != kind)
+        return "the answer's kind differs from the job's";
+    if (e.status < evaluation_t::STATUS_SOLVED || e.status > evaluation_t::STATUS_ERROR)
+        return "unknown status " + std::to_string(e.status);
+    if (kind == envdesign::job_t::KIND_ROBOT_BOUND)
+        return e.has_robot_bound && !valid_cost(e.robot_bound)
+                   ? std::optional<std::string>("the robot bound is not a cost")
+                   : std::nullopt;
+    if (e.status != evaluation_t::STATUS_SOLVED && e.status != evaluation_t::STATUS_INEXPLICABLE)
+        return std::nullopt;
+    if (!valid_cost(e.ie) || !valid_cost(e.robot_cost) || !valid_cost(e.human_plan_cost) ||
+        (e.has_human_optimal_cost && !valid_cost(e.human_optimal_cost)))
+        return "a cost or IE is not a non-negative number";
+    return std::nullopt;
+}
+
+void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
+    switch (t.status) {
+    case design::ExplicabilityStatus::SOLVED:
+        e.status = evaluation_t::STATUS_SOLVED;
+        break;
+    case design::ExplicabilityStatus::INEXPLICABLE:
+        e.status = evaluation_t::STATUS_INEXPLICABLE;
+        break;
+    default:
+        e.status = evaluation_t::STATUS_LIMIT;
+    }
+    e.ie = t.ie;
+    e.robot_cost = t.robot_cost;
+    e.human_plan_cost = t.human_plan_cost;
+    e.has_human_optimal_cost = t.human_optimal_cost.has_value();
+    e.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
+    e.plan = t.plan;
+    e.plan_length = static_cast<std::int16_t>(e.plan.size());
+}
+
+void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
+    e.status = bound ? evaluation_t::STATUS_SOLVED : evaluation_t::STATUS_LIMIT;
+    e.has_robot_bound = bound.has_value();
+    e.robot_bound = bound.value_or(design::INF);
+}
+
+design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
+    design::JobAnswer answer{job, std::nullopt, {}};
+    if (job.kind == design::JobKind::ROBOT_BOUND) {
+        if (e.has_robot_bound)
+            answer.robot_bound = e.robot_bound;
+        return answer;
+    }
+    design::TaskExplicability &t = answer.explicability;
+    if (e.status == evaluation_t::STATUS_SOLVED)
+        t.status = design::ExplicabilityStatus::SOLVED;
+    else if (e.status == evaluation_t::STATUS_INEXPLICABLE)
+        t.status = design::ExplicabilityStatus::INEXPLICABLE;
+    else
+        return answer; // LIMIT
+    t.ie = e.ie;
+    t.robot_cost = e.robot_cost;
+    t.human_plan_cost = e.human_plan_cost;
+    if (e.has_human_optimal_cost)
+        t.human_optimal_cost = e.human_optimal_cost;
+    t.plan = e.plan;
+    return answer;
+}
+
+envdesign::design_result_t result_message(const design::DesignProblem &problem,
+                                          const design::DesignResult &result,
+                                          const TransportCounters &transport) {
+    envdesign::design_result_t m{};
+    m.exit_code = result.limit_reached ? 4 : 0;
+    m.status = result.optimal ? "optimal" : "best_found";
+    m.has_design = result.best.has_value();
+    if (result.best) {
+        m.design = design::design_names(problem, result.best->ranked.configuration);
+        m.design_size = static_cast<std::int16_t>(m.design.size());
+        m.best = terms_message(result.best->objective);
+        for (std::size_t i = 0; i < result.best->tasks.size(); ++i)
+            m.tasks.push_back(task_message(problem.tasks[i], result.best->tasks[i]));
+        m.num_tasks = static_cast<std::int16_t>(m.tasks.size());
+    }
+    m.has_baseline = result.baseline.has_value();
+    if (result.baseline)
+        m.baseline = terms_message(result.baseline->objective);
+    m.counters = counters_message(result.counters, transport);
+    m.limit_reached = result.limit_reached;
+    return m;
+}
+
+envdesign::design_result_t error_result(int exit_code, const std::string &message) {
+    envdesign::design_result_t m{};
+    m.exit_code = static_cast<std::int8_t>(exit_code);
+    m.status = "error";
+    m.error = message;
+    return m;
+}
+
+} // namespace envdesign::cluster

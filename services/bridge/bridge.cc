@@ -1,0 +1,207 @@
+#include "bridge.h"
+
+#include "spec_request.h"
+
+#include "bus/channels.h"
+#include "bus/log.h"
+#include "design/design_spec.h"
+
+#include <cmath>
+#include <limits>
+
+namespace envdesign::bridge {
+namespace {
+
+constexpr double WAIT_S = 0.2;       // the reader thread checks for shutdown this often
+constexpr double HEARTBEAT_S = 1.0;  // estimates of idle problems, this often
+constexpr std::size_t BATCH = 4096;  // samples taken at once
+
+arrivals::Distribution spec_distribution(const design::DesignProblem &problem) {
+    arrivals::Distribution d;
+    for (const auto &t : problem.tasks)
+        d[t.name] = t.probability;
+    return d;
+}
+
+std::string quoted(const std::string &s) {
+    // Samples are untrusted: keep log lines short and on one line.
+    std::string out = s.substr(0, 60);
+    for (char &c : out)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            c = '?';
+    return "'" + out + (s.size() > 60 ? "...'" : "'");
+}
+
+} // namespace
+
+Bridge::Bridge(bus::Bus &bus, BridgeConfig config)
+    : bus_(bus), config_(std::move(config)), tracker_(config_.tracker) {
+    std::map<std::string, design::DesignProblem> problems;
+    std::map<std::string, envdesign::spec_t> specs;
+    for (const auto &source : config_.problems) {
+        design::DesignProblem problem = design::load_design_problem(source.spec_path);
+        tracker_.add_problem(source.id, spec_distribution(problem));
+        problems_[source.id].design.objective = std::numeric_limits<double>::quiet_NaN();
+        if (config_.mode == Mode::COORDINATOR)
+            specs[source.id] = read_spec_message(source.spec_path);
+        problems.emplace(source.id, std::move(problem));
+    }
+    Answered answered = [this](Answer a) { on_answer(std::move(a)); };
+    if (config_.mode == Mode::LOCAL)
+        backend_ = std::make_unique<LocalRedesigns>(bus_, config_.instance, std::move(problems),
+                                                    config_.local, answered);
+    else
+        backend_ = std::make_unique<CoordinatorRedesigns>(
+            bus_, config_.instance, std::move(specs), config_.coordinator, answered);
+    results_.emplace(bus_.subscribe<envdesign::design_result_t>(
+        bus::RESULT, [this](const envdesign::design_result_t &r) { backend_->on_result(r); }));
+    reader_ = std::make_unique<dds::ArrivalReader>(config_.domain, config_.reader_history);
+    {
+        std::lock_guard lock(mutex_);
+        for (const auto &source : config_.problems)
+            send(tracker_.initial_request(source.id, now()));
+    }
+    reader_thread_ = std::thread([this] { read_arrivals(); });
+}
+
+Bridge::~Bridge() {
+    {
+        std::lock_guard lock(mutex_); // an answer being handled finishes first
+        stopping_ = true;
+    }
+    reader_->wake();
+    reader_thread_.join();
+    backend_.reset(); // joins the local worker; its last answer sees stopping_
+}
+
+double Bridge::now() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void Bridge::read_arrivals() {
+    std::vector<arrivals::Arrival> batch;
+    while (!stopping_) {
+        try {
+            if (reader_->wait(WAIT_S))
+                take_batch(batch);
+        } catch (const std::exception &e) { // DDS failed: say so, try again later
+            bus_.log().error("request - | reading arrivals: {}", e.what());
+            std::this_thread::sleep_for(std::chrono::seconds(1));
+        }
+    }
+}
+
+void Bridge::take_batch(std::vector<arrivals::Arrival> &batch) {
+    batch.clear();
+    reader_->take(batch, BATCH);
+    std::lock_guard lock(mutex_);
+    double t = now();
+    std::int64_t utime = bus::now_utime();
+    for (const auto &arrival : batch)
+        receive(arrival, t, utime);
+    for (const auto &[id, published] : problems_)
+        publish_estimate(id, t, false);
+}
+
+void Bridge::receive(const arrivals::Arrival &arrival, double t, std::int64_t utime) {
+    arrivals::Outcome outcome = tracker_.receive(arrival, t, utime);
+    if (outcome.verdict != arrivals::Verdict::ACCEPTED || outcome.use == arrivals::Use::UNKNOWN_TASK)
+        log_rejected(arrival, outcome, t);
+    if (outcome.use == arrivals::Use::NEW_TASK)
+        bus_.log().info("request - | {}: new task {} from site {}, with its problem ({} bytes)",
+                        arrival.problem_id, quoted(arrival.task), quoted(arrival.site),
+                        arrival.problem.size());
+    if (outcome.request)
+        send(*outcome.request);
+}
+
+void Bridge::log_rejected(const arrivals::Arrival &a, const arrivals::Outcome &outcome, double t) {
+    if (outcome.verdict == arrivals::Verdict::ACCEPTED) { // an unknown task: once per name
+        if (outcome.first_of_name)
+            bus_.log().warn("request - | {}: arrivals of unknown task {} (site {}) are counted, "
+                            "not estimated; send its problem to add it",
+                            a.problem_id, quoted(a.task), quoted(a.site));
+        return;
+    }
+    arrivals::LogThrottle::Decision d = throttle_.should_log(outcome.verdict, t);
+    if (!d.log)
+        return;
+    bus_.log().warn("request - | bad arrival ({}): problem {} site {} task {} sequence {} utime "
+                    "{}{}",
+                    arrivals::to_string(outcome.verdict), quoted(a.problem_id), quoted(a.site),
+                    quoted(a.task), a.sequence, a.utime,
+                    d.suppressed ? fmt::format(" ({} more of this kind not logged)", d.suppressed)
+                                 : "");
+}
+
+void Bridge::send(const arrivals::Request &request) {
+    std::int64_t id = ++next_request_id_;
+    Published &p = problems_[request.problem_id];
+    p.design.request_id = id;
+    auto status = tracker_.status(request.problem_id);
+    envdesign::task_distribution_t m =
+        request_message(request, *status, tracker_.counters(), config_.tracker, p.design);
+    m.utime = bus::now_utime();
+    m.request_id = id;
+    m.sender = config_.instance;
+    bus_.publish(REEVALUATE, m);
+    bus_.log().info("request {} | {}: re-evaluate ({}): D {} vs the design's {} (TV {:.3f}, {:.0f} "
+                    "samples){}",
+                    bus::request_name(config_.instance, id), request.problem_id,
+                    arrivals::to_string(request.reason), arrivals::to_string(request.estimate),
+                    arrivals::to_string(request.reference), request.distance, request.samples,
+                    request.new_tasks.empty()
+                        ? ""
+                        : fmt::format(", {} new task(s)", request.new_tasks.size()));
+    backend_->start(id, request);
+    publish_estimate(request.problem_id, now(), true);
+}
+
+void Bridge::publish_estimate(const std::string &id, double t, bool force) {
+    Published &p = problems_[id];
+    if (!force && t - p.at < 1.0 / config_.publish_hz)
+        return; // before copying the status: this runs after every batch
+    auto status = tracker_.status(id);
+    if (!force && status->estimated == p.estimated && t - p.at < HEARTBEAT_S)
+        return;
+    envdesign::task_distribution_t m =
+        distribution_message(*status, tracker_.counters(), config_.tracker, p.design);
+    m.utime = bus::now_utime();
+    m.sender = config_.instance;
+    bus_.publish(TASK_DISTRIBUTION, m);
+    p.at = t;
+    p.estimated = status->estimated;
+}
+
+void Bridge::on_answer(Answer answer) {
+    std::lock_guard lock(mutex_);
+    if (stopping_)
+        return;
+    ++answers_;
+    Published &p = problems_[answer.problem_id];
+    std::int64_t last_request = p.design.request_id;
+    p.design = answer.design;
+    p.design.request_id = last_request;
+    arrivals::Distribution reference =
+        answer.reference ? *answer.reference : tracker_.status(answer.problem_id)->reference;
+    bus_.log().info("request {} | {}: {}", bus::request_name(config_.instance, answer.request_id),
+                    answer.problem_id, answer.design.last_change);
+    auto next = tracker_.answered(answer.problem_id, reference, now());
+    publish_estimate(answer.problem_id, now(), true);
+    if (next)
+        send(*next);
+}
+
+void Bridge::tick() {
+    std::lock_guard lock(mutex_);
+    double t = now();
+    for (const auto &[id, published] : problems_)
+        publish_estimate(id, t, false);
+}
+
+BridgeStats Bridge::stats() const {
+    std::lock_guard lock(mutex_);
+    return {tracker_.counters(), next_request_id_, answers_};
+}
+
+} // namespace envdesign::bridge

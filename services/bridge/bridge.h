@@ -1,0 +1,109 @@
+#pragma once
+// Overview: envdesign-bridge's core (main.cc is its thin main; README.md the user's view).
+//
+//   DDS TaskArrival --(reader thread)--> ArrivalTracker (common/arrivals: checks, estimate of
+//   D per design problem, drift detector)
+//     --> ENVDESIGN_TASK_DISTRIBUTION: each problem's estimate (lcm-spy shows it)
+//     --> on drift or a new task: ENVDESIGN_REEVALUATE (the request, same type) and a
+//         re-evaluation by a RedesignBackend (redesigns.h): in this process, or by
+//         envdesign-coordinator through ENVDESIGN_REQUEST
+//   ENVDESIGN_RESULT <-- the new design, with what changed and why; its D becomes the
+//   reference the drift detector compares the estimate with.
+//
+// Threads: the DDS reader thread takes samples and feeds the tracker; the bus thread (the
+// one calling bus.handle() and tick()) takes results; the local backend has its own worker.
+// One mutex guards the tracker; LCM publishing is thread-safe (bus.h). Bad samples are
+// counted and logged through a LogThrottle; nothing a sample holds can throw out of the
+// reader thread.
+//
+//   Bridge bridge(bus, config);                  // loads specs, joins DDS, asks for designs
+//   while (running) { bus.handle(20ms); bridge.tick(); }
+
+#include "messages.h"
+#include "redesigns.h"
+
+#include "arrivals/tracker.h"
+#include "bus/bus.h"
+#include "dds/arrival_topic.h"
+
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace envdesign::bridge {
+
+enum class Mode { LOCAL, COORDINATOR };
+
+struct ProblemSource {
+    std::string id;        // as the arrivals name it
+    std::string spec_path; // its design problem file
+};
+
+struct BridgeConfig {
+    std::string instance; // the bridge's name on the bus
+    std::vector<ProblemSource> problems;
+    arrivals::TrackerConfig tracker;
+    Mode mode = Mode::LOCAL;
+    int domain = 0;                           // DDS domain id
+    int reader_history = dds::READER_HISTORY; // per (problem, site)
+    double publish_hz = 10;                   // estimates per problem per second, at most
+    arrivals::RedesignOptions local;          // Mode::LOCAL
+    CoordinatorRequestOptions coordinator;    // Mode::COORDINATOR
+};
+
+struct BridgeStats {
+    arrivals::IntakeCounters intake;
+    long long requests = 0; // re-evaluations asked for (the initial ones included)
+    long long answers = 0;
+};
+
+class Bridge {
+public:
+    // Throws pddl::ParseError for a spec that does not load, dds::DdsError when DDS fails.
+    Bridge(bus::Bus &bus, BridgeConfig config);
+    ~Bridge(); // stops the reader thread and the backend
+
+    void tick(); // bus thread: estimates of problems whose arrivals paused
+    BridgeStats stats() const;
+
+private:
+    void read_arrivals(); // the reader thread
+    void take_batch(std::vector<arrivals::Arrival> &batch);
+    // The rest run with mutex_ held.
+    void receive(const arrivals::Arrival &arrival, double now, std::int64_t now_utime);
+    void log_rejected(const arrivals::Arrival &arrival, const arrivals::Outcome &outcome,
+                      double now);
+    void send(const arrivals::Request &request);
+    void publish_estimate(const std::string &id, double now, bool force);
+    void on_answer(Answer answer);
+    double now() const;
+
+    bus::Bus &bus_;
+    BridgeConfig config_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    mutable std::mutex mutex_;
+    arrivals::ArrivalTracker tracker_;
+    arrivals::LogThrottle throttle_;
+    struct Published {
+        DesignInForce design;
+        double at = -1e9;          // last estimate sent
+        long long estimated = -1;  // the problem's estimated count then
+    };
+    std::map<std::string, Published> problems_;
+    std::int64_t next_request_id_ = 0;
+    long long answers_ = 0;
+    std::unique_ptr<RedesignBackend> backend_;
+    std::optional<bus::Subscription> results_; // optional: bus.h's default constructor
+                                               // needs a type only bus.cc sees
+    std::unique_ptr<dds::ArrivalReader> reader_;
+    std::atomic<bool> stopping_{false};
+    std::thread reader_thread_; // last: starts once everything else exists
+};
+
+} // namespace envdesign::bridge

@@ -1,0 +1,119 @@
+// envdesign-bridge: task arrivals from DDS in, task distribution estimates and
+// re-evaluations out on LCM (README.md; bridge.h has the overview).
+
+#include "bridge.h"
+
+#include "pddl/parse_error.h"
+#include "service_main.h"
+
+#include <iostream>
+
+namespace {
+
+using namespace envdesign;
+
+struct Flags {
+    std::vector<std::string> problems; // ID=SPEC
+    std::string mode = "local", estimator = "window:200", heuristic = "lmcut";
+};
+
+void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
+    auto &drift = c.tracker.drift;
+    auto &intake = c.tracker.intake;
+    app.add_option("--problem", f.problems, "ID=SPEC: track design problem ID (repeatable)")
+        ->required();
+    app.add_option("--redesign", f.mode,
+                   "local: re-evaluate in this process; coordinator: "
+                   "ask envdesign-coordinator")
+        ->check(CLI::IsMember({"local", "coordinator"}))
+        ->capture_default_str();
+    app.add_option("--domain", c.domain, "DDS domain id")->check(CLI::Range(0, 230));
+    app.add_option("--estimator", f.estimator,
+                   "window:N (last N arrivals) or decay:H "
+                   "(half-life H arrivals)")
+        ->capture_default_str();
+    app.add_option("--threshold", drift.threshold, "TV distance that asks for a re-evaluation")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    app.add_option("--rearm", drift.rearm_threshold, "TV below which the detector re-arms")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    app.add_option("--min-samples", drift.min_samples, "evidence needed before a request")
+        ->capture_default_str();
+    app.add_option("--holdoff", drift.holdoff_arrivals, "arrivals between two requests")
+        ->capture_default_str();
+    app.add_option("--answer-timeout", drift.answer_timeout_s, "seconds to wait for a design")
+        ->capture_default_str();
+    app.add_option("--max-rate", intake.max_rate, "arrivals/s per site (0: no limit)")
+        ->capture_default_str();
+    app.add_option("--burst", intake.burst, "burst allowed above --max-rate")
+        ->capture_default_str();
+    app.add_option("--max-future", intake.max_future_s, "seconds a timestamp may be ahead")
+        ->capture_default_str();
+    app.add_option("--max-age", intake.max_age_s, "seconds a timestamp may be behind")
+        ->capture_default_str();
+    app.add_option("--publish-hz", c.publish_hz, "estimates per problem per second, at most")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--reader-history", c.reader_history, "DDS reader depth per site")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--workers", c.local.workers, "planner threads (--redesign local)")
+        ->check(CLI::Range(1, 256));
+    app.add_option("--heuristic", f.heuristic, "lmcut | hmax | blind")
+        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+    app.add_option("--time-limit", c.local.time_limit_s,
+                   "seconds per re-evaluation (default: the spec's)");
+}
+
+// Flags -> config; throws CLI::ValidationError for a bad --problem or --estimator.
+void finish_config(const Flags &f, bridge::BridgeConfig &c) {
+    for (const auto &p : f.problems) {
+        auto eq = p.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == p.size())
+            throw CLI::ValidationError("--problem", "expected ID=SPEC, got '" + p + "'");
+        c.problems.push_back({p.substr(0, eq), p.substr(eq + 1)});
+    }
+    try {
+        c.tracker.estimator = arrivals::parse_estimator_config(f.estimator);
+    } catch (const std::invalid_argument &e) {
+        throw CLI::ValidationError("--estimator", e.what());
+    }
+    if (c.tracker.drift.rearm_threshold > c.tracker.drift.threshold)
+        throw CLI::ValidationError("--rearm", "must not exceed --threshold");
+    c.mode = f.mode == "local" ? bridge::Mode::LOCAL : bridge::Mode::COORDINATOR;
+    c.local.planner.heuristic = heuristics::parse_heuristic_kind(f.heuristic);
+    c.coordinator.heuristic = static_cast<std::int8_t>(f.heuristic == "hmax"    ? 1
+                                                       : f.heuristic == "blind" ? 2
+                                                                                : 0);
+    c.coordinator.time_limit_s = c.local.time_limit_s;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    CLI::App app{"envdesign-bridge: task arrivals (DDS) -> task distribution and designs (LCM)"};
+    services::CommonFlags common;
+    services::add_common_flags(app, common);
+    Flags flags;
+    bridge::BridgeConfig config;
+    add_flags(app, flags, config);
+    try {
+        app.parse(argc, argv);
+        finish_config(flags, config);
+    } catch (const CLI::ParseError &e) {
+        return e.get_exit_code() == 0 ? app.exit(e) : (app.exit(e), 2);
+    }
+    try {
+        services::Service service = services::open_service("bridge", common);
+        config.instance = service.instance;
+        bridge::Bridge bridge(*service.bus, config);
+        return services::run_until_signal(service, [&] { bridge.tick(); });
+    } catch (const pddl::ParseError &e) {
+        std::cerr << e.what() << std::endl;
+        return 2;
+    } catch (const std::exception &e) {
+        std::cerr << "envdesign-bridge: " << e.what() << std::endl;
+        return 1;
+    }
+}

@@ -1,0 +1,165 @@
+#include "redesigns.h"
+
+#include "spec_request.h"
+
+#include "bus/channels.h"
+#include "bus/log.h"
+#include "cluster/wire.h"
+#include "envdesign/design_request_t.hpp"
+#include "pddl/parse_error.h"
+
+#include <cmath>
+#include <limits>
+
+namespace envdesign::bridge {
+namespace {
+
+constexpr double NOT_KNOWN = std::numeric_limits<double>::quiet_NaN();
+
+std::string names(const std::vector<std::string> &list) {
+    std::string out = "{";
+    for (const auto &n : list)
+        out += (out.size() > 1 ? ", " : "") + n;
+    return out + "}";
+}
+
+} // namespace
+
+RedesignBackend::~RedesignBackend() = default;
+
+void RedesignBackend::on_result(const envdesign::design_result_t &) {}
+
+LocalRedesigns::LocalRedesigns(bus::Bus &bus, std::string instance,
+                               std::map<std::string, design::DesignProblem> problems,
+                               arrivals::RedesignOptions options, Answered answered)
+    : bus_(bus), instance_(std::move(instance)), answered_(std::move(answered)) {
+    for (auto &[id, problem] : problems)
+        redesigners_[id] = std::make_unique<arrivals::Redesigner>(std::move(problem), options);
+    thread_ = std::thread([this] { run(); });
+}
+
+LocalRedesigns::~LocalRedesigns() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    ready_.notify_all();
+    thread_.join();
+}
+
+void LocalRedesigns::start(std::int64_t request_id, const arrivals::Request &request) {
+    {
+        std::lock_guard lock(mutex_);
+        jobs_.push_back({request_id, request});
+    }
+    ready_.notify_one();
+}
+
+void LocalRedesigns::run() {
+    while (true) {
+        Job job;
+        {
+            std::unique_lock lock(mutex_);
+            ready_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
+            if (stopping_)
+                return;
+            job = std::move(jobs_.front());
+            jobs_.pop_front();
+        }
+        redesign(job);
+    }
+}
+
+void LocalRedesigns::redesign(const Job &job) {
+    const std::string &id = job.request.problem_id;
+    arrivals::Redesigner &r = *redesigners_.at(id);
+    envdesign::design_result_t message;
+    Answer answer{id, job.request_id, std::nullopt, {}};
+    try {
+        arrivals::Redesign out = r.redesign(job.request.estimate, job.request.new_tasks);
+        message = cluster::result_message(r.problem(), out.result, {});
+        answer.design = {out.change.after_names, out.change.objective_after,
+                         out.change.explanation, job.request_id};
+        answer.reference = r.distribution();
+        bus_.log().info("request {} | {}: {} ({} planner runs, {} configurations from the store, "
+                        "{:.3f} ms)",
+                        bus::request_name(instance_, job.request_id), id, out.change.explanation,
+                        out.change.planner_runs, out.change.stored_answers,
+                        out.change.seconds * 1e3);
+    } catch (const std::exception &e) { // a spec model that does not ground: keep the design
+        message = cluster::error_result(dynamic_cast<const pddl::ParseError *>(&e) ? 2 : 1,
+                                        e.what());
+        answer.design = {{}, NOT_KNOWN, std::string("re-evaluation failed: ") + e.what(),
+                         job.request_id};
+        bus_.log().error("request {} | {}: {}", bus::request_name(instance_, job.request_id), id,
+                         e.what());
+    }
+    if (r.current())
+        answer.design.design = design::design_names(r.problem(), r.current()->ranked.configuration);
+    message.utime = bus::now_utime();
+    message.request_id = job.request_id;
+    message.sender = instance_;
+    message.client = instance_;
+    bus_.publish(bus::RESULT, message);
+    answered_(std::move(answer));
+}
+
+CoordinatorRedesigns::CoordinatorRedesigns(bus::Bus &bus, std::string instance,
+                                           std::map<std::string, envdesign::spec_t> specs,
+                                           CoordinatorRequestOptions options, Answered answered)
+    : bus_(bus), instance_(std::move(instance)), options_(options),
+      answered_(std::move(answered)), specs_(std::move(specs)) {}
+
+void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Request &request) {
+    envdesign::design_request_t m{};
+    {
+        std::lock_guard lock(mutex_);
+        m.spec = with_distribution(specs_.at(request.problem_id), request.estimate,
+                                   request.new_tasks);
+        pending_[request_id] = {request.problem_id, m.spec};
+    }
+    m.utime = bus::now_utime();
+    m.request_id = request_id;
+    m.sender = instance_;
+    m.time_limit_s = options_.time_limit_s;
+    m.max_design_size = -1;
+    m.prune = envdesign::design_request_t::PRUNE_NONE;
+    m.heuristic = options_.heuristic;
+    bus_.publish(bus::REQUEST, m);
+}
+
+void CoordinatorRedesigns::on_result(const envdesign::design_result_t &result) {
+    Answer answer;
+    {
+        std::lock_guard lock(mutex_);
+        auto it = pending_.find(result.request_id);
+        if (result.client != instance_ || it == pending_.end())
+            return; // another client's, or a repeat of one answered
+        Pending pending = std::move(it->second);
+        pending_.erase(it);
+        const std::string &id = pending.problem_id;
+        answer = {id, result.request_id, std::nullopt, {}};
+        std::vector<std::string> &before = designs_[id];
+        if (!result.has_design) {
+            answer.design = {before, NOT_KNOWN,
+                             "the coordinator gave no design (" + result.status + "): " +
+                                 result.error,
+                             result.request_id};
+        } else {
+            specs_[id] = pending.spec; // the new tasks are the problem's now
+            answer.reference = references_[id] = distribution_of(result);
+            std::string what = before == result.design
+                                   ? "design " + names(result.design) + " unchanged"
+                                   : "design " + names(before) + " -> " + names(result.design);
+            answer.design = {result.design, result.best.objective,
+                             what + " for D " + arrivals::to_string(references_[id]) + " (" +
+                                 std::to_string(result.counters.planner_runs) +
+                                 " planner runs on the coordinator)",
+                             result.request_id};
+            before = result.design;
+        }
+    }
+    answered_(std::move(answer));
+}
+
+} // namespace envdesign::bridge

@@ -1,0 +1,109 @@
+#pragma once
+// Who re-evaluates a design problem for the bridge, behind one interface:
+//   - LocalRedesigns (--redesign local): in the bridge's own process, on one worker thread,
+//     with a Redesigner per problem (arrivals/redesign.h): evaluations are stored, so a new
+//     D is a re-weighting; it publishes the design_result_t on ENVDESIGN_RESULT itself.
+//   - CoordinatorRedesigns (--redesign coordinator): sends the spec with the new D (and the
+//     new tasks) to envdesign-coordinator as a design request on ENVDESIGN_REQUEST and takes
+//     the coordinator's ENVDESIGN_RESULT as the answer.
+// Either way the bridge hears back through `Answered` (from any thread).
+
+#include "messages.h"
+
+#include "arrivals/redesign.h"
+#include "bus/bus.h"
+#include "envdesign/design_result_t.hpp"
+#include "envdesign/spec_t.hpp"
+
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+namespace envdesign::bridge {
+
+struct Answer {
+    std::string problem_id;
+    std::int64_t request_id = 0;
+    // The D the design in force was made for; unset: no new design (the re-evaluation
+    // failed), the old one stays.
+    std::optional<arrivals::Distribution> reference;
+    DesignInForce design;
+};
+using Answered = std::function<void(Answer)>;
+
+class RedesignBackend {
+public:
+    virtual ~RedesignBackend();
+    // Starts re-evaluating `request.problem_id` for `request.estimate`; answers later.
+    virtual void start(std::int64_t request_id, const arrivals::Request &request) = 0;
+    // A design_result_t heard on ENVDESIGN_RESULT (bus thread).
+    virtual void on_result(const envdesign::design_result_t &result);
+};
+
+class LocalRedesigns : public RedesignBackend {
+public:
+    // `bus` and `log` must outlive this; `answered` is called on the worker thread.
+    LocalRedesigns(bus::Bus &bus, std::string instance,
+                   std::map<std::string, design::DesignProblem> problems,
+                   arrivals::RedesignOptions options, Answered answered);
+    ~LocalRedesigns() override; // finishes the running redesign, drops the queued ones
+
+    void start(std::int64_t request_id, const arrivals::Request &request) override;
+
+private:
+    struct Job {
+        std::int64_t request_id;
+        arrivals::Request request;
+    };
+    void run();
+    void redesign(const Job &job);
+
+    bus::Bus &bus_;
+    std::string instance_;
+    Answered answered_;
+    std::map<std::string, std::unique_ptr<arrivals::Redesigner>> redesigners_;
+    std::mutex mutex_;
+    std::condition_variable ready_;
+    std::deque<Job> jobs_;
+    bool stopping_ = false;
+    std::thread thread_; // last: starts once the rest exists
+};
+
+struct CoordinatorRequestOptions {
+    std::int8_t heuristic = 0; // design_request_t::HEURISTIC_*
+    double time_limit_s = -1;  // < 0: the spec's
+};
+
+class CoordinatorRedesigns : public RedesignBackend {
+public:
+    // `specs`: each problem's spec file with its files inlined (spec_request.h).
+    CoordinatorRedesigns(bus::Bus &bus, std::string instance,
+                         std::map<std::string, envdesign::spec_t> specs,
+                         CoordinatorRequestOptions options, Answered answered);
+
+    void start(std::int64_t request_id, const arrivals::Request &request) override;
+    void on_result(const envdesign::design_result_t &result) override;
+
+private:
+    struct Pending {
+        std::string problem_id;
+        envdesign::spec_t spec; // as sent: new tasks in it
+    };
+
+    bus::Bus &bus_;
+    std::string instance_;
+    CoordinatorRequestOptions options_;
+    Answered answered_;
+    std::mutex mutex_; // start() on the DDS thread, on_result() on the bus thread
+    std::map<std::string, envdesign::spec_t> specs_;            // with new tasks taken in
+    std::map<std::string, std::vector<std::string>> designs_;   // the last design per problem
+    std::map<std::string, arrivals::Distribution> references_;  // its D
+    std::map<std::int64_t, Pending> pending_;
+};
+
+} // namespace envdesign::bridge

@@ -1,0 +1,47 @@
+// envdesign-coordinator: the design search as a service (README.md).
+
+#include "cluster/coordinator.h"
+#include "cluster/spec_loader.h"
+#include "service_main.h"
+
+#include <iostream>
+
+int main(int argc, char **argv) {
+    using namespace envdesign;
+    CLI::App app{"envdesign-coordinator: design requests in, progress and results out"};
+    services::CommonFlags common;
+    services::add_common_flags(app, common);
+    cluster::CoordinatorConfig config;
+    config.work_dir = cluster::default_work_dir();
+    app.add_option("--max-requests", config.max_active, "requests searched at once")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--planner-timeout", config.pool.planner_timeout_s,
+                   "seconds of silence after which a planner is gone")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--lost-after", config.pool.lost_after_s,
+                   "seconds after which a job its planner does not list is sent again")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--jobs-per-slot", config.pool.jobs_per_slot,
+                   "jobs in flight per planner worker")
+        ->check(CLI::Range(1, 64))
+        ->capture_default_str();
+    app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
+        ->capture_default_str();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError &e) {
+        return e.get_exit_code() == 0 ? app.exit(e) : (app.exit(e), 2);
+    }
+    try {
+        services::Service service = services::open_service("coordinator", common);
+        config.instance = service.instance;
+        cluster::Coordinator coordinator(*service.bus, config);
+        return services::run_until_signal(service, [&] { coordinator.tick(); });
+    } catch (const std::exception &e) {
+        std::cerr << "envdesign-coordinator: " << e.what() << std::endl;
+        return 1;
+    }
+}

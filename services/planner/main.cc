@@ -1,0 +1,43 @@
+// envdesign-planner: evaluates candidate designs for coordinators (README.md).
+
+#include "cluster/planner.h"
+#include "cluster/spec_loader.h"
+#include "service_main.h"
+
+#include <iostream>
+
+int main(int argc, char **argv) {
+    using namespace envdesign;
+    CLI::App app{"envdesign-planner: jobs in, evaluations out"};
+    services::CommonFlags common;
+    services::add_common_flags(app, common);
+    cluster::PlannerConfig config;
+    config.work_dir = cluster::default_work_dir();
+    app.add_option("--workers", config.workers, "jobs worked on at once (threads)")
+        ->check(CLI::Range(1, 256))
+        ->capture_default_str();
+    app.add_option("--heartbeat", config.heartbeat_period_s, "seconds between heartbeats")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_option("--max-specs", config.max_specs, "specs kept loaded")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
+        ->capture_default_str();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError &e) {
+        return e.get_exit_code() == 0 ? app.exit(e) : (app.exit(e), 2);
+    }
+    try {
+        services::Service service = services::open_service("planner", common);
+        config.instance = service.instance;
+        cluster::Planner planner(*service.bus, config);
+        int code = services::run_until_signal(service, [&] { planner.tick(); });
+        planner.stop(); // coordinators move its jobs at once; running ones still finish
+        return code;
+    } catch (const std::exception &e) {
+        std::cerr << "envdesign-planner: " << e.what() << std::endl;
+        return 1;
+    }
+}

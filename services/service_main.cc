@@ -1,0 +1,58 @@
+#include "service_main.h"
+
+#include "bus/lcm_url.h"
+#include "bus/log.h"
+
+#include <atomic>
+#include <csignal>
+
+namespace envdesign::services {
+namespace {
+
+std::atomic<int> g_signal{0}; // the one global: signal handlers cannot reach anything else
+
+extern "C" void on_signal(int signal) { g_signal = signal; }
+
+} // namespace
+
+void add_common_flags(CLI::App &app, CommonFlags &flags) {
+    app.add_option("--lcm-url", flags.lcm_url,
+                   "LCM URL (default: $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
+    app.add_option("--name", flags.name, "instance name on the bus (default: ROLE/HOST/PID)");
+    app.add_option("--log-level", flags.log_level, "trace|debug|info|warn|error|off")
+        ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
+}
+
+Service open_service(const std::string &role, const CommonFlags &flags) {
+    Service s;
+    s.instance = flags.name.empty() ? bus::instance_name(role) : flags.name;
+    s.log = bus::make_logger(s.instance, spdlog::level::from_str(flags.log_level));
+    std::string url =
+        bus::with_receive_buffer(flags.lcm_url.empty() ? bus::default_url() : flags.lcm_url);
+    s.bus = std::make_unique<bus::Bus>(url, s.log);
+    s.log->info("request - | on {}", url);
+    return s;
+}
+
+int run_until_signal(Service &service, const std::function<void()> &tick, int period_ms) {
+    struct sigaction action {};
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+    int failures = 0; // in a row; a signal interrupting the wait fails one too
+    while (g_signal == 0) {
+        bool failed = service.bus->handle(std::chrono::milliseconds(period_ms)) < 0;
+        failures = failed && g_signal == 0 ? failures + 1 : 0;
+        if (failures >= 100) {
+            service.log->error("request - | LCM keeps failing; stopping");
+            return 1;
+        }
+        tick();
+    }
+    service.log->info("request - | signal {}: stopping", g_signal.load());
+    return 0;
+}
+
+} // namespace envdesign::services
