@@ -13,6 +13,8 @@ struct Subscription::Slot {
 Subscription::Subscription(Bus *bus, lcm::Subscription *raw, std::unique_ptr<Slot> slot)
     : bus_(bus), raw_(raw), slot_(std::move(slot)) {}
 
+Subscription::Subscription() = default;
+
 Subscription::Subscription(Subscription &&other) noexcept { *this = std::move(other); }
 
 Subscription &Subscription::operator=(Subscription &&other) noexcept {

@@ -46,7 +46,7 @@ class Bus;
 // One channel's handler; unsubscribes when destroyed. Move-only.
 class Subscription {
 public:
-    Subscription() = default;
+    Subscription();
     Subscription(Subscription &&other) noexcept;
     Subscription &operator=(Subscription &&other) noexcept;
     Subscription(const Subscription &) = delete;

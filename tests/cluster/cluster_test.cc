@@ -1,0 +1,189 @@
+// The coordinator and planner cores in one process over memq://: the networked search
+// gives the in-process evaluator's answer, also when a planner loses jobs, answers twice
+// or too late; bad input and repeated requests.
+
+#include "harness.h"
+
+#include "cluster/wire.h"
+#include "envdesign/cancel_t.hpp"
+#include "envdesign/planner_heartbeat_t.hpp"
+
+namespace envdesign::cluster::testing {
+namespace {
+
+nlohmann::json json_of(const envdesign::design_result_t &r) {
+    return nlohmann::json::parse(client::result_json(r));
+}
+
+TEST(Cluster, TwoPlannersGiveTheLocalResult) {
+    MemqCluster cluster(2);
+    for (const char *spec :
+         {"examples/restaurant/c-two-tasks-t10.textproto", "examples/blocksworld/design.textproto",
+          "tests/e2e/data/warehouse-small/signs-1.textproto"}) {
+        SCOPED_TRACE(spec);
+        static std::int64_t id = 0;
+        auto result = cluster.request(request_of(data(spec), ++id));
+        ASSERT_EQ(result.exit_code, 0) << result.error;
+        expect_same_design(json_of(result), local_result(data(spec)));
+        EXPECT_EQ(result.counters.jobs_resent, 0);
+        EXPECT_EQ(result.counters.duplicates_ignored, 0);
+    }
+}
+
+// A planner that loses every third job, answers every third twice, and answers the rest
+// only after the coordinator gave up on it (not listing them in its heartbeats).
+class FlakyPlanner {
+public:
+    FlakyPlanner(bus::Bus &bus, const std::string &spec)
+        : bus_(bus), problem_(design::load_design_problem(spec)), evaluator_(problem_, 1) {
+        jobs_ = bus.subscribe<envdesign::job_t>(bus::JOB,
+                                                [this](const envdesign::job_t &j) { on_job(j); });
+    }
+
+    void tick() {
+        auto now = std::chrono::steady_clock::now();
+        if (now - last_beat_ > std::chrono::milliseconds(50)) {
+            envdesign::planner_heartbeat_t b{};
+            b.sender = "flaky";
+            b.capacity = 1;
+            b.period_ms = 50;
+            bus_.publish(bus::HEARTBEAT, b);
+            last_beat_ = now;
+        }
+        while (!late_.empty() && late_.front().first <= now) {
+            bus_.publish(bus::EVALUATION, late_.front().second);
+            late_.erase(late_.begin());
+        }
+    }
+
+    int handled = 0;
+
+private:
+    void on_job(const envdesign::job_t &job) {
+        if (job.planner != "flaky")
+            return;
+        switch (handled++ % 3) {
+        case 0:
+            return; // lost
+        case 1:
+            bus_.publish(bus::EVALUATION, answer(job));
+            bus_.publish(bus::EVALUATION, answer(job)); // duplicated
+            return;
+        default:
+            late_.emplace_back(std::chrono::steady_clock::now() + std::chrono::milliseconds(400),
+                               answer(job));
+        }
+    }
+
+    envdesign::evaluation_t answer(const envdesign::job_t &job) {
+        envdesign::evaluation_t e{};
+        e.request_id = job.request_id;
+        e.sender = "flaky";
+        e.coordinator = job.sender;
+        e.job_id = job.job_id;
+        e.kind = job.kind;
+        design::Configuration c = configuration_of(job);
+        if (job.kind == envdesign::job_t::KIND_ROBOT_BOUND)
+            put_robot_bound(evaluator_.robot_cost_bound(c, job.task, {}), e);
+        else
+            put_explicability(evaluator_.evaluate_task(c, job.task, {}), e);
+        return e;
+    }
+
+    bus::Bus &bus_;
+    design::DesignProblem problem_;
+    design::LocalEvaluator evaluator_;
+    bus::Subscription jobs_;
+    std::chrono::steady_clock::time_point last_beat_{};
+    std::vector<std::pair<std::chrono::steady_clock::time_point, envdesign::evaluation_t>> late_;
+};
+
+TEST(Cluster, LostDuplicatedAndLateAnswersChangeNothing) {
+    std::string spec = data("examples/restaurant/c-two-tasks-t10.textproto");
+    std::shared_ptr<FlakyPlanner> flaky;
+    MemqCluster cluster(1, 1, [&](bus::Bus &bus) {
+        flaky = std::make_shared<FlakyPlanner>(bus, spec);
+        return [flaky] { flaky->tick(); };
+    });
+    auto result = cluster.request(request_of(spec, 1));
+    ASSERT_EQ(result.exit_code, 0) << result.error;
+    expect_same_design(json_of(result), local_result(spec));
+    EXPECT_GE(flaky->handled, 3);
+    EXPECT_GE(result.counters.jobs_resent, 1);
+    EXPECT_GE(result.counters.duplicates_ignored, 1);
+}
+
+TEST(Cluster, BadInputIsExit2NamingTheClientsFile) {
+    MemqCluster cluster(1);
+    auto request = request_of(data("examples/restaurant/c-two-tasks-t10.textproto"), 5);
+    for (auto &file : request.spec.files)
+        if (file.path == "domain.pddl")
+            file.content = "(define (domain restaurant)\n  (:predicates (p)\n";
+    auto result = cluster.request(request);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(result.status, "error");
+    EXPECT_NE(result.error.find("examples/restaurant/domain.pddl:"), std::string::npos)
+        << result.error;
+
+    auto missing = request_of(data("examples/restaurant/c-two-tasks-t10.textproto"), 6);
+    missing.spec.files.pop_back();
+    missing.spec.num_files = static_cast<std::int16_t>(missing.spec.files.size());
+    result = cluster.request(missing);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.error.find("the request does not carry"), std::string::npos) << result.error;
+}
+
+TEST(Cluster, RepeatedRequestIsAnsweredFromRecord) {
+    MemqCluster cluster(1);
+    auto request = request_of(data("examples/restaurant/b-two-tasks-t1.textproto"), 9);
+    auto first = cluster.request(request);
+    auto again = cluster.request(request);
+    EXPECT_EQ(client::result_json(first), client::result_json(again));
+    EXPECT_EQ(cluster.coordinator().stats().accepted, 1);
+    EXPECT_GE(cluster.coordinator().stats().repeats, 1);
+}
+
+TEST(Cluster, SeveralRequestsAtOnce) {
+    MemqCluster cluster(2);
+    std::vector<std::string> specs = {"examples/restaurant/c-two-tasks-t10.textproto",
+                                      "tests/e2e/data/warehouse-small/signs-1.textproto",
+                                      "examples/restaurant/a-one-task-t1.textproto"};
+    for (std::size_t i = 0; i < specs.size(); ++i)
+        cluster.bus().publish(bus::REQUEST, request_of(data(specs[i]), 100 + i));
+    for (std::size_t i = 0; i < specs.size(); ++i) {
+        auto result = cluster.wait(100 + i);
+        ASSERT_EQ(result.exit_code, 0) << result.error;
+        expect_same_design(json_of(result), local_result(data(specs[i])));
+    }
+}
+
+TEST(Cluster, CancelStopsTheSearchWithWhatItHas) {
+    MemqCluster cluster(1);
+    auto request = request_of(data("tests/e2e/data/warehouse/signs-3.textproto"), 3);
+    cluster.bus().publish(bus::REQUEST, request);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    envdesign::cancel_t cancel{};
+    cancel.request_id = 3;
+    cancel.sender = request.sender;
+    cancel.reason = "test";
+    cluster.bus().publish(bus::CANCEL, cancel);
+    auto result = cluster.wait(3, 10);
+    EXPECT_EQ(result.exit_code, 4);
+    EXPECT_TRUE(result.limit_reached);
+    EXPECT_EQ(result.status, "best_found");
+}
+
+TEST(Cluster, RequestsThatMakeNoSenseAreCountedAndAnswered) {
+    MemqCluster cluster(1);
+    auto request = request_of(data("examples/restaurant/a-one-task-t1.textproto"), 4);
+    request.heuristic = 9;
+    auto result = cluster.request(request);
+    EXPECT_EQ(result.exit_code, 2);
+    request.sender.clear(); // cannot be answered: only counted
+    cluster.bus().publish(bus::REQUEST, request);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_GE(cluster.bus().malformed(), 2);
+}
+
+} // namespace
+} // namespace envdesign::cluster::testing

@@ -1,0 +1,131 @@
+// The coordinator's bookkeeping of planners and jobs: round robin over free slots, re-sends
+// of lost jobs and of the jobs of a planner that went silent, first answers win.
+
+#include "cluster/planner_pool.h"
+
+#include <gtest/gtest.h>
+
+namespace envdesign::cluster {
+namespace {
+
+using Clock = PlannerPool::Clock;
+using namespace std::chrono_literals;
+
+envdesign::planner_heartbeat_t beat(const std::string &name, int capacity,
+                                    std::vector<std::int64_t> jobs = {}) {
+    envdesign::planner_heartbeat_t b{};
+    b.sender = name;
+    b.capacity = static_cast<std::int16_t>(capacity);
+    b.period_ms = 200;
+    b.jobs = std::move(jobs);
+    b.num_jobs = static_cast<std::int16_t>(b.jobs.size());
+    return b;
+}
+
+envdesign::job_t job(std::int64_t id) {
+    envdesign::job_t j{};
+    j.job_id = id;
+    j.kind = envdesign::job_t::KIND_EXPLICABILITY;
+    return j;
+}
+
+TEST(PlannerPool, RoundRobinOverFreeSlotsThenQueue) {
+    PlannerPool pool({});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.heartbeat(beat("b", 1), now);
+    EXPECT_EQ(pool.capacity(), 2);
+    auto first = pool.submit(1, job(1), now);
+    auto second = pool.submit(1, job(2), now);
+    ASSERT_EQ(first.size(), 1u);
+    ASSERT_EQ(second.size(), 1u);
+    EXPECT_NE(first[0].planner, second[0].planner);
+    EXPECT_TRUE(pool.submit(1, job(3), now).empty()); // both busy: queued
+    std::vector<envdesign::job_t> freed;
+    ASSERT_TRUE(pool.answer(1, first[0].planner, freed, now));
+    ASSERT_EQ(freed.size(), 1u);
+    EXPECT_EQ(freed[0].job_id, 3);
+    EXPECT_EQ(freed[0].planner, first[0].planner);
+}
+
+TEST(PlannerPool, FirstAnswerWinsDuplicatesAreCounted) {
+    PlannerPool pool({});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.submit(7, job(1), now);
+    std::vector<envdesign::job_t> freed;
+    EXPECT_TRUE(pool.answer(1, "a", freed, now));
+    EXPECT_FALSE(pool.answer(1, "a", freed, now));
+    EXPECT_FALSE(pool.answer(99, "a", freed, now)); // never sent
+    EXPECT_EQ(pool.counters().duplicates, 2);
+    EXPECT_EQ(pool.counters(7).duplicates, 1);
+    EXPECT_EQ(pool.counters(7).answered_by, std::set<std::string>{"a"});
+}
+
+TEST(PlannerPool, JobMissingFromALaterHeartbeatIsResent) {
+    PlannerPool pool({1.0, 0.3, 1});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.heartbeat(beat("b", 1), now);
+    auto sent = pool.submit(1, job(5), now);
+    ASSERT_EQ(sent.size(), 1u);
+    std::string first = sent[0].planner;
+    // Soon after sending, a heartbeat may not list the job yet: nothing happens.
+    EXPECT_TRUE(pool.heartbeat(beat(first, 1), now + 100ms).empty());
+    // Listed: the planner is on it.
+    EXPECT_TRUE(pool.heartbeat(beat(first, 1, {5}), now + 400ms).empty());
+    // Not listed well after sending: lost (or its answer was); sent again, to the other.
+    auto resent = pool.heartbeat(beat(first, 1), now + 600ms);
+    ASSERT_EQ(resent.size(), 1u);
+    EXPECT_EQ(resent[0].job_id, 5);
+    EXPECT_EQ(resent[0].attempt, 1);
+    EXPECT_NE(resent[0].planner, first);
+    EXPECT_EQ(pool.counters(1).jobs_resent, 1);
+}
+
+TEST(PlannerPool, SilentPlannerIsDroppedAndItsJobsMove) {
+    PlannerPool pool({1.0, 0.3, 1});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.heartbeat(beat("b", 1), now);
+    auto sent = pool.submit(1, job(5), now);
+    std::string silent = sent[0].planner, alive = silent == "a" ? "b" : "a";
+    pool.heartbeat(beat(alive, 1), now + 900ms);
+    auto moved = pool.expire(now + 1100ms);
+    ASSERT_EQ(moved.size(), 1u);
+    EXPECT_EQ(moved[0].planner, alive);
+    EXPECT_EQ(pool.live_planners(), 1);
+    // The lost planner's late answer still counts (first answer), the re-sent one does not.
+    std::vector<envdesign::job_t> freed;
+    EXPECT_TRUE(pool.answer(5, silent, freed, now + 1200ms));
+    EXPECT_FALSE(pool.answer(5, alive, freed, now + 1300ms));
+}
+
+TEST(PlannerPool, StoppingPlannerIsDroppedAtOnce) {
+    PlannerPool pool({});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 2), now);
+    pool.submit(1, job(1), now);
+    auto stop = beat("a", 2);
+    stop.stopping = true;
+    EXPECT_TRUE(pool.heartbeat(stop, now).empty()); // nobody to take it: queued
+    EXPECT_EQ(pool.live_planners(), 0);
+    auto sent = pool.heartbeat(beat("b", 1), now);
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0].planner, "b");
+}
+
+TEST(PlannerPool, ForgottenJobsFreeTheirSlots) {
+    PlannerPool pool({});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.submit(3, job(1), now);
+    pool.submit(3, job(2), now);
+    EXPECT_EQ(pool.jobs_in_flight(3), 2);
+    pool.forget_owner(3);
+    EXPECT_EQ(pool.jobs_in_flight(3), 0);
+    EXPECT_EQ(pool.submit(4, job(9), now).size(), 1u);
+}
+
+} // namespace
+} // namespace envdesign::cluster
