@@ -1,0 +1,193 @@
+// The services as deployed: envdesign-coordinator and envdesign-planner processes over udpm
+// on loopback, the C++ client library in this process. Whatever happens to the planners or
+// on the channels, the answer is the self-contained run's.
+
+#include "local_cluster.h"
+
+#include "bus/codec.h"
+#include "envdesign/cancel_t.hpp"
+#include "envdesign/design_request_t.hpp"
+#include "envdesign/evaluation_t.hpp"
+#include "envdesign/job_t.hpp"
+#include "envdesign/spec_chunk_t.hpp"
+
+#include <envdesign/client/client.h>
+
+#include <atomic>
+#include <random>
+
+namespace envdesign::e2e {
+namespace {
+
+const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
+const char *WAREHOUSE = "tests/e2e/data/warehouse/signs-2.textproto";
+
+client::Result design(const LocalCluster &cluster, const std::string &spec,
+                      std::function<void(const client::Progress &)> on_progress = {}) {
+    client::Options options;
+    options.on_progress = std::move(on_progress);
+    options.give_up_after_s = 10;
+    return client::run_design_remote(source(spec), cluster.url(), options);
+}
+
+void expect_self_contained(const client::Result &result, const std::string &spec) {
+    ASSERT_EQ(result.exit_code, 0) << result.error;
+    expect_same_design(nlohmann::json::parse(result.json), self_contained(source(spec)));
+}
+
+TEST(EndToEnd, CoordinatorAndTwoPlannersGiveTheSelfContainedResult) {
+    LocalCluster cluster(2);
+    for (const char *spec : {RESTAURANT, WAREHOUSE}) {
+        SCOPED_TRACE(spec);
+        client::Result result = design(cluster, spec);
+        expect_self_contained(result, spec);
+        auto counters = nlohmann::json::parse(result.json).at("cluster");
+        EXPECT_EQ(counters.at("planners_used"), 2);
+        EXPECT_EQ(counters.at("jobs_resent"), 0);
+    }
+    EXPECT_TRUE(cluster.coordinator().running());
+}
+
+TEST(EndToEnd, PlannerKilledMidRun) {
+    LocalCluster cluster(2);
+    std::atomic<bool> killed{false};
+    client::Result result = design(cluster, WAREHOUSE, [&](const client::Progress &p) {
+        if (p.evaluations >= 40 && !killed.exchange(true))
+            cluster.planner(0).signal(SIGKILL);
+    });
+    ASSERT_TRUE(killed);
+    expect_self_contained(result, WAREHOUSE);
+    EXPECT_EQ(cluster.planner(0).wait(), 128 + SIGKILL);
+    EXPECT_NE(cluster.coordinator().log().find("planner-0 went silent"), std::string::npos)
+        << cluster.logs();
+    EXPECT_GE(nlohmann::json::parse(result.json).at("cluster").at("jobs_resent"), 1);
+}
+
+TEST(EndToEnd, PlannerStartedMidRunTakesWork) {
+    LocalCluster cluster(1);
+    std::atomic<bool> started{false};
+    std::thread starter;
+    client::Result result = design(cluster, WAREHOUSE, [&](const client::Progress &p) {
+        if (p.evaluations >= 30 && !started.exchange(true))
+            starter = std::thread([&] { cluster.add_planner(); });
+    });
+    if (starter.joinable())
+        starter.join();
+    ASSERT_TRUE(started);
+    expect_self_contained(result, WAREHOUSE);
+    EXPECT_EQ(nlohmann::json::parse(result.json).at("cluster").at("planners_used"), 2)
+        << cluster.logs();
+    EXPECT_NE(cluster.planner(1).log().find("spec"), std::string::npos); // it asked for it
+}
+
+// Publishes junk on every ENVDESIGN_ channel until stopped: random bytes, messages of the
+// wrong type, truncated ones, and well-typed ones that make no sense.
+class Garbage {
+public:
+    explicit Garbage(const std::string &url)
+        : bus_(url, std::make_shared<spdlog::logger>(
+                        "garbage", std::make_shared<spdlog::sinks::null_sink_mt>())),
+          thread_([this] { run(); }) {}
+    ~Garbage() {
+        stop_ = true;
+        thread_.join();
+    }
+    long long sent() const { return sent_; }
+
+private:
+    void run() {
+        std::mt19937 random(7);
+        while (!stop_) {
+            for (const char *channel : bus::ALL_CHANNELS)
+                junk(channel, random);
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+    void junk(const char *channel, std::mt19937 &random) {
+        std::string bytes(random() % 3000, '\0');
+        for (auto &c : bytes)
+            c = static_cast<char>(random());
+        bus_.publish_raw(channel, bytes.data(), static_cast<int>(bytes.size()));
+        envdesign::cancel_t wrong_type{};
+        bus_.publish(channel, wrong_type);
+        std::string job = bus::encode_message(nonsense_job());
+        bus_.publish_raw(channel, job.data(), static_cast<int>(job.size()) / 2);
+        if (std::string(channel) == bus::JOB)
+            bus_.publish(channel, nonsense_job());
+        if (std::string(channel) == bus::SPEC) {
+            envdesign::spec_chunk_t chunk{};
+            chunk.spec_hash = std::string(64, 'a');
+            chunk.total_bytes = 10;
+            chunk.num_chunks = 5;
+            bus_.publish(channel, chunk);
+        }
+        if (std::string(channel) == bus::EVALUATION) {
+            envdesign::evaluation_t e{};
+            e.coordinator = "coordinator";
+            e.job_id = static_cast<std::int64_t>(random());
+            e.status = 42;
+            bus_.publish(channel, e);
+        }
+        sent_ += 3;
+    }
+    static envdesign::job_t nonsense_job() {
+        envdesign::job_t j{};
+        j.sender = "coordinator";
+        j.planner = "planner-0";
+        j.job_id = 12345;
+        j.spec_hash = std::string(64, 'b');
+        j.kind = 77;
+        j.task = -3;
+        return j;
+    }
+
+    bus::Bus bus_;
+    std::atomic<bool> stop_{false};
+    std::atomic<long long> sent_{0};
+    std::thread thread_;
+};
+
+TEST(EndToEnd, GarbageOnEveryChannelChangesNothing) {
+    LocalCluster cluster(2);
+    client::Result result;
+    long long sent = 0;
+    {
+        Garbage garbage(cluster.url());
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        result = design(cluster, WAREHOUSE);
+        sent = garbage.sent();
+    }
+    EXPECT_GT(sent, 100);
+    expect_self_contained(result, WAREHOUSE);
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
+    EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
+    EXPECT_TRUE(cluster.planner(1).running()) << cluster.logs();
+    EXPECT_NE(cluster.coordinator().log().find("malformed message on ENVDESIGN_REQUEST"),
+              std::string::npos);
+    EXPECT_NE(cluster.planner(0).log().find("malformed message on ENVDESIGN_JOB"),
+              std::string::npos);
+    // And the services stop cleanly afterwards.
+    cluster.planner(1).signal(SIGTERM);
+    EXPECT_EQ(cluster.planner(1).wait(), 0);
+    cluster.coordinator().signal(SIGTERM);
+    EXPECT_EQ(cluster.coordinator().wait(), 0);
+}
+
+TEST(EndToEnd, NoCoordinatorIsExit1) {
+    client::Options options;
+    options.give_up_after_s = 1;
+    options.resend_after_s = 0.3;
+    client::Result result = client::run_design_remote(source(RESTAURANT), unique_url(), options);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.error.find("no coordinator"), std::string::npos) << result.error;
+}
+
+TEST(EndToEnd, BadSpecIsExit2BeforeSending) {
+    client::Result result = client::run_design_remote(
+        source("tests/data/design/bad/missing-file.textproto"), unique_url());
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.error.find("missing-file.textproto:4:"), std::string::npos) << result.error;
+}
+
+} // namespace
+} // namespace envdesign::e2e

@@ -1,0 +1,202 @@
+#pragma once
+// Real service processes on loopback udpm for the end-to-end tests: a coordinator and
+// planners started from build/bin, each test on its own UDP port (PLATFORM.md: ports
+// isolate, group addresses do not), logs in a temporary directory.
+
+#include "bus/bus.h"
+#include "bus/channels.h"
+#include "envdesign/planner_heartbeat_t.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <spdlog/sinks/null_sink.h>
+
+#include <csignal>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <spawn.h>
+#include <sstream>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+extern char **environ;
+
+namespace envdesign::e2e {
+
+inline std::string source(const std::string &relative) {
+    return std::string(ENVDESIGN_TEST_DATA_ROOT) + "/" + relative;
+}
+inline std::string binary(const std::string &name) {
+    return std::string(ENVDESIGN_BIN_DIR) + "/" + name;
+}
+
+// A URL of our own for this test process.
+inline std::string unique_url() {
+    return "udpm://239.255.76.67:" + std::to_string(40000 + getpid() % 20000) +
+           "?ttl=0&recv_buf_size=4194304";
+}
+
+// A child process with stdout and stderr in `log`; SIGTERM (then SIGKILL) when destroyed.
+class Process {
+public:
+    Process(const std::vector<std::string> &args, const std::string &log) : log_(log) {
+        posix_spawn_file_actions_t files;
+        posix_spawn_file_actions_init(&files);
+        posix_spawn_file_actions_addopen(&files, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                         0644);
+        posix_spawn_file_actions_adddup2(&files, 1, 2);
+        std::vector<char *> argv;
+        for (const auto &a : args)
+            argv.push_back(const_cast<char *>(a.c_str()));
+        argv.push_back(nullptr);
+        int rc = posix_spawn(&pid_, argv[0], &files, nullptr, argv.data(), environ);
+        posix_spawn_file_actions_destroy(&files);
+        EXPECT_EQ(rc, 0) << "cannot start " << args[0];
+    }
+    ~Process() {
+        if (!running())
+            return;
+        signal(SIGTERM);
+        for (int i = 0; i < 100 && running(); ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(30));
+        if (running())
+            signal(SIGKILL);
+        wait();
+    }
+    void signal(int s) const { ::kill(pid_, s); }
+    bool running() {
+        if (exited_)
+            return false;
+        int status = 0;
+        if (waitpid(pid_, &status, WNOHANG) == pid_) {
+            exited_ = true;
+            status_ = status;
+        }
+        return !exited_;
+    }
+    // The exit code (128 + signal if killed).
+    int wait() {
+        if (!exited_) {
+            waitpid(pid_, &status_, 0);
+            exited_ = true;
+        }
+        return WIFEXITED(status_) ? WEXITSTATUS(status_) : 128 + WTERMSIG(status_);
+    }
+    std::string log() const {
+        std::ifstream in(log_);
+        std::stringstream s;
+        s << in.rdbuf();
+        return s.str();
+    }
+
+private:
+    std::string log_;
+    pid_t pid_ = -1;
+    bool exited_ = false;
+    int status_ = 0;
+};
+
+// Hears heartbeats, to know which planners the coordinator can see.
+class HeartbeatWatcher {
+public:
+    explicit HeartbeatWatcher(const std::string &url)
+        : bus_(url, std::make_shared<spdlog::logger>(
+                        "watcher", std::make_shared<spdlog::sinks::null_sink_mt>())) {
+        sub_ = bus_.subscribe<envdesign::planner_heartbeat_t>(
+            bus::HEARTBEAT, [this](const envdesign::planner_heartbeat_t &b) {
+                if (!b.stopping)
+                    seen_.insert(b.sender);
+            });
+    }
+    // True once `name` was heard within `timeout_s`.
+    bool wait_for(const std::string &name, double timeout_s = 10) {
+        auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+        while (!seen_.count(name) && std::chrono::steady_clock::now() < end)
+            bus_.handle(std::chrono::milliseconds(20));
+        return seen_.count(name) > 0;
+    }
+
+private:
+    bus::Bus bus_;
+    bus::Subscription sub_;
+    std::set<std::string> seen_;
+};
+
+class LocalCluster {
+public:
+    explicit LocalCluster(int planners, std::vector<std::string> coordinator_flags = {})
+        : url_(unique_url()), dir_(std::filesystem::temp_directory_path() /
+                                   ("envdesign-e2e-" + std::to_string(getpid()))) {
+        std::filesystem::create_directories(dir_);
+        std::vector<std::string> args = {binary("envdesign-coordinator"),
+                                         "--lcm-url",
+                                         url_,
+                                         "--name",
+                                         "coordinator",
+                                         "--planner-timeout",
+                                         "0.5"};
+        args.insert(args.end(), coordinator_flags.begin(), coordinator_flags.end());
+        coordinator_ = std::make_unique<Process>(args, (dir_ / "coordinator.log").string());
+        for (int i = 0; i < planners; ++i)
+            add_planner();
+    }
+    ~LocalCluster() {
+        planners_.clear();
+        coordinator_.reset();
+        if (!::testing::Test::HasFailure())
+            std::filesystem::remove_all(dir_);
+    }
+
+    // Starts planner "planner-N" and waits until it is heard.
+    Process &add_planner(const std::vector<std::string> &flags = {}) {
+        std::string name = "planner-" + std::to_string(planners_.size());
+        std::vector<std::string> args = {
+            binary("envdesign-planner"), "--lcm-url", url_, "--name", name, "--heartbeat", "0.1"};
+        args.insert(args.end(), flags.begin(), flags.end());
+        planners_.push_back(std::make_unique<Process>(args, (dir_ / (name + ".log")).string()));
+        EXPECT_TRUE(watcher_.wait_for(name)) << name << " never beat";
+        return *planners_.back();
+    }
+
+    const std::string &url() const { return url_; }
+    Process &coordinator() { return *coordinator_; }
+    Process &planner(int i) { return *planners_.at(i); }
+    std::string logs() {
+        std::string all = "--- coordinator\n" + coordinator_->log();
+        for (std::size_t i = 0; i < planners_.size(); ++i)
+            all += "--- planner-" + std::to_string(i) + "\n" + planners_[i]->log();
+        return all;
+    }
+
+private:
+    std::string url_;
+    std::filesystem::path dir_;
+    HeartbeatWatcher watcher_{url_};
+    std::unique_ptr<Process> coordinator_;
+    std::vector<std::unique_ptr<Process>> planners_;
+};
+
+// `envdesign design SPEC --json`: the self-contained run.
+inline nlohmann::json self_contained(const std::string &spec) {
+    std::string command = binary("envdesign") + " design " + spec + " --json 2>/dev/null";
+    FILE *out = popen(command.c_str(), "r");
+    std::string text;
+    char buffer[4096];
+    while (out && fgets(buffer, sizeof buffer, out))
+        text += buffer;
+    if (out)
+        pclose(out);
+    return nlohmann::json::parse(text);
+}
+
+// The fields of SPEC.md's result that do not depend on how the work was spread.
+inline void expect_same_design(const nlohmann::json &got, const nlohmann::json &want) {
+    for (const char *key : {"status", "design", "objective", "terms", "baseline", "tasks",
+                            "configurations_total", "limit_reached"})
+        EXPECT_EQ(got.at(key), want.at(key)) << key;
+}
+
+} // namespace envdesign::e2e
