@@ -65,7 +65,7 @@ void LcmEvaluator::send_jobs(Batch &batch, const design::Deadline &deadline) {
         envdesign::job_t message =
             job_message(*job, batch.configurations[job->configuration], request_.request_id,
                         request_.spec_hash, request_.heuristic, deadline);
-        batch.in_flight[router_.send(owner_, std::move(message))] = *job;
+        batch.in_flight[router_.send(owner_, std::move(message))] = {*job, Clock::now()};
     }
 }
 
@@ -73,7 +73,9 @@ void LcmEvaluator::take(Batch &batch, const envdesign::evaluation_t &answer) {
     auto it = batch.in_flight.find(answer.job_id);
     if (it == batch.in_flight.end())
         return; // of an earlier batch that stopped waiting for it
-    design::Job job = it->second;
+    design::Job job = it->second.job;
+    double round_trip = std::chrono::duration<double>(Clock::now() - it->second.at).count();
+    transport_seconds_ += std::max(0.0, round_trip - answer.seconds);
     batch.in_flight.erase(it);
     ++answers_;
     if (job.kind == design::JobKind::EXPLICABILITY)
@@ -97,10 +99,10 @@ void LcmEvaluator::take(Batch &batch, const envdesign::evaluation_t &answer) {
 // Stops waiting: every job still out counts as out of time.
 void LcmEvaluator::give_up(Batch &batch) {
     std::vector<std::int64_t> ids;
-    for (const auto &[id, job] : batch.in_flight) {
+    for (const auto &[id, sent] : batch.in_flight) {
         ids.push_back(id);
         if (!error_)
-            batch.dispatcher.receive(design::JobAnswer{job, std::nullopt, {}});
+            batch.dispatcher.receive(design::JobAnswer{sent.job, std::nullopt, {}});
     }
     batch.in_flight.clear();
     router_.forget(ids);

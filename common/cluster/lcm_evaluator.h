@@ -55,13 +55,19 @@ public:
     // Sends, re-sends, duplicates and planners of this evaluator's jobs.
     PoolCounters transport() const { return router_.pool().counters(owner_); }
     long long answers() const { return answers_.load(); }
+    // Summed over answers: round trip less the planner's own time (what the network adds).
+    double transport_seconds() const { return transport_seconds_; }
     int in_flight() const { return in_flight_.load(); }
 
 private:
+    struct Sent {
+        design::Job job;
+        std::chrono::steady_clock::time_point at;
+    };
     struct Batch {
         const std::vector<design::Configuration> &configurations;
         design::Dispatcher &dispatcher;
-        std::map<std::int64_t, design::Job> in_flight;
+        std::map<std::int64_t, Sent> in_flight;
     };
 
     void send_jobs(Batch &batch, const design::Deadline &deadline);
@@ -79,6 +85,7 @@ private:
     std::uint64_t owner_;
     design::EvaluatorCounters counters_;
     std::optional<RemoteError> error_;
+    double transport_seconds_ = 0;
     std::atomic<long long> answers_{0};
     std::atomic<int> in_flight_{0};
 };

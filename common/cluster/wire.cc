@@ -55,6 +55,7 @@ envdesign::design_counters_t counters_message(const design::DesignCounters &c,
     m.jobs_resent = transport.jobs_resent;
     m.duplicates_ignored = transport.duplicates_ignored;
     m.planners_used = static_cast<std::int16_t>(transport.planners_used);
+    m.transport_seconds = transport.transport_seconds;
     return m;
 }
 

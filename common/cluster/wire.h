@@ -47,6 +47,7 @@ struct TransportCounters {
     long long jobs_resent = 0;
     long long duplicates_ignored = 0;
     int planners_used = 0;
+    double transport_seconds = 0;
 };
 
 // design_result_t of a finished search (header fields left to the sender).

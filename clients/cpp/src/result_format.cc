@@ -56,7 +56,8 @@ void put_counters(json &out, const envdesign::design_counters_t &c) {
     out["cluster"] = {{"jobs_sent", c.jobs_sent},
                       {"jobs_resent", c.jobs_resent},
                       {"duplicates_ignored", c.duplicates_ignored},
-                      {"planners_used", c.planners_used}};
+                      {"planners_used", c.planners_used},
+                      {"transport_seconds", c.transport_seconds}};
 }
 
 std::string shown(double value) { return number(value).dump(); }
