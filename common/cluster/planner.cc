@@ -67,7 +67,37 @@ void Planner::tick() {
     auto now = Clock::now();
     if (std::chrono::duration<double>(now - last_beat_).count() >= config_.heartbeat_period_s)
         heartbeat(stopping_);
+    drop_stale_parked(now);
     ask_for_specs(now);
+}
+
+void Planner::drop_stale_parked(Clock::time_point now) {
+    std::vector<envdesign::job_t> dropped;
+    {
+        std::lock_guard lock(mutex_);
+        for (auto it = parked_.begin(); it != parked_.end();) {
+            auto &jobs = it->second;
+            for (auto job = jobs.begin(); job != jobs.end();) {
+                if (std::chrono::duration<double>(now - job->received).count() <
+                    config_.park_limit_s) {
+                    ++job;
+                    continue;
+                }
+                held_.erase(job->job.job_id);
+                dropped.push_back(job->job);
+                job = jobs.erase(job);
+            }
+            if (jobs.empty()) {
+                asked_.erase(it->first);
+                it = parked_.erase(it);
+            } else {
+                ++it;
+            }
+        }
+    }
+    for (const auto &job : dropped)
+        bus_.log().warn("request {} | job {} dropped: spec {} never came", job.request_id,
+                        job.job_id, job.spec_hash.substr(0, 12));
 }
 
 void Planner::stop() {

@@ -6,7 +6,8 @@
 // time; what it keeps (specs, its plan caches, recent answers) only saves work.
 //
 //   - A job naming a spec it lacks waits while the planner asks the job's coordinator for
-//     it (ENVDESIGN_SPEC_NEED, again every need_retry_s).
+//     it (ENVDESIGN_SPEC_NEED, again every need_retry_s); after park_limit_s it is dropped
+//     (the coordinator has long sent it elsewhere).
 //   - A job it holds already is a duplicate and ignored; one it answered lately (the answer
 //     was lost) is answered again from memory.
 //   - Each worker has its own plan cache per spec, so a job's counters are its own.
@@ -34,6 +35,7 @@ struct PlannerConfig {
     int workers = 1;
     double heartbeat_period_s = 0.2;
     double need_retry_s = 0.3;
+    double park_limit_s = 30; // a job whose spec never comes is dropped after this
     int max_specs = 4;
     int answers_kept = 4096;
 };
@@ -64,6 +66,7 @@ private:
     void on_job(const envdesign::job_t &job);
     void on_chunk(const envdesign::spec_chunk_t &chunk);
     void ask_for_specs(Clock::time_point now);
+    void drop_stale_parked(Clock::time_point now);
     void heartbeat(bool stopping);
     void work();
     envdesign::evaluation_t evaluate(const Pending &pending, class WorkerCaches &caches);

@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# deploy/cluster.sh start|stop|status [--planners N] [--workers W] [--lcm-url URL] [--dir DIR]
+#
+# A local envdesign cluster on this machine: one envdesign-coordinator and N envdesign-planner
+# processes (default 2) on LCM's loopback default (udpm://239.255.76.67:7667?ttl=0; ttl=0
+# keeps every datagram on this host). Logs and pid files go to DIR (default
+# /tmp/envdesign-cluster). `start` returns once every process is up; `stop` sends SIGTERM
+# (planners first, so the coordinator hears them go), waits up to 10 s, then SIGKILLs.
+# Both are idempotent. Binaries: $ENVDESIGN_BIN, else build/bin beside this script.
+#
+#   bash deploy/cluster.sh start --planners 2
+#   build/bin/envdesign design examples/restaurant/c-two-tasks-t10.textproto \
+#       --connect 'udpm://239.255.76.67:7667?ttl=0'
+#   bash deploy/cluster.sh stop
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")" && pwd)
+bin=${ENVDESIGN_BIN:-$here/../build/bin}
+action=${1:-}
+shift || true
+planners=2
+workers=1
+url=${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0}
+dir=/tmp/envdesign-cluster
+while [ $# -gt 0 ]; do
+    case $1 in
+        --planners) planners=$2; shift 2 ;;
+        --workers) workers=$2; shift 2 ;;
+        --lcm-url) url=$2; shift 2 ;;
+        --dir) dir=$2; shift 2 ;;
+        *) echo "cluster.sh: unknown option $1" >&2; exit 2 ;;
+    esac
+done
+
+alive() { [ -f "$1" ] && kill -0 "$(cat "$1")" 2>/dev/null; }
+
+# start_one NAME ARGS...: starts a service unless its pid file names a live process.
+start_one() {
+    local name=$1; shift
+    if alive "$dir/$name.pid"; then
+        echo "cluster.sh: $name already running (pid $(cat "$dir/$name.pid"))"
+        return
+    fi
+    "$@" --lcm-url "$url" --name "$name" >"$dir/$name.log" 2>&1 &
+    echo $! >"$dir/$name.pid"
+}
+
+# The service logs "on URL" once its bus is open; a process that died says why in its log.
+wait_up() {
+    local name=$1
+    for _ in $(seq 100); do
+        grep -q "| on " "$dir/$name.log" 2>/dev/null && return 0
+        alive "$dir/$name.pid" || break
+        sleep 0.05
+    done
+    echo "cluster.sh: $name did not start; its log:" >&2
+    cat "$dir/$name.log" >&2
+    return 1
+}
+
+stop_all() {
+    local pids=() f
+    for f in "$dir"/planner-*.pid "$dir"/coordinator.pid; do
+        [ -f "$f" ] || continue
+        if alive "$f"; then
+            kill -TERM "$(cat "$f")"
+            pids+=("$(cat "$f")")
+        fi
+    done
+    for _ in $(seq 100); do
+        local left=0 p
+        for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && left=1; done
+        [ $left = 0 ] && break
+        sleep 0.1
+    done
+    for p in "${pids[@]}"; do kill -0 "$p" 2>/dev/null && kill -KILL "$p" && echo "cluster.sh: killed $p"; done
+    rm -f "$dir"/*.pid
+    echo "cluster.sh: stopped ${#pids[@]} process(es)"
+}
+
+case $action in
+    start)
+        mkdir -p "$dir"
+        start_one coordinator "$bin/envdesign-coordinator"
+        for i in $(seq 1 "$planners"); do
+            start_one "planner-$i" "$bin/envdesign-planner" --workers "$workers"
+        done
+        wait_up coordinator
+        for i in $(seq 1 "$planners"); do wait_up "planner-$i"; done
+        echo "cluster.sh: coordinator and $planners planner(s) on $url (logs in $dir)"
+        ;;
+    stop)
+        stop_all
+        ;;
+    status)
+        for f in "$dir"/*.pid; do
+            [ -f "$f" ] || continue
+            n=$(basename "$f" .pid)
+            if alive "$f"; then echo "$n: running (pid $(cat "$f"))"; else echo "$n: dead"; fi
+        done
+        ;;
+    *)
+        echo "usage: cluster.sh start|stop|status [--planners N] [--workers W] [--lcm-url URL] [--dir DIR]" >&2
+        exit 2
+        ;;
+esac
