@@ -22,13 +22,16 @@ bool DriftDetector::observe(const Distribution &estimate, double samples, double
         return false;
     if (state_ == DriftState::HELD && now - requested_at_ < config_.retry_s)
         return false;
-    return request(now);
+    return request(now, estimate);
 }
 
-bool DriftDetector::force(double now) { return state_ != DriftState::PENDING && request(now); }
+bool DriftDetector::force(double now, const Distribution &requested) {
+    return state_ != DriftState::PENDING && request(now, requested);
+}
 
-bool DriftDetector::request(double now) {
+bool DriftDetector::request(double now, const Distribution &requested) {
     state_ = DriftState::PENDING;
+    requested_ = requested;
     requested_at_ = now;
     arrivals_since_request_ = 0;
     requested_before_ = true;
@@ -37,11 +40,13 @@ bool DriftDetector::request(double now) {
 }
 
 void DriftDetector::answered(const Distribution &reference, const Distribution &estimate) {
+    bool as_requested = state_ == DriftState::PENDING &&
+                        total_variation(reference, requested_) < config_.rearm_threshold;
     reference_ = reference;
     last_tv_ = total_variation(reference_, estimate);
     // With no arrivals yet there is nothing the design could have missed.
     bool close = estimate.empty() || last_tv_ < config_.rearm_threshold;
-    state_ = close ? DriftState::ARMED : DriftState::HELD;
+    state_ = as_requested || close ? DriftState::ARMED : DriftState::HELD;
 }
 
 const char *to_string(DriftState state) {

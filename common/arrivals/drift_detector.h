@@ -4,8 +4,9 @@
 // detector flap.
 //
 //   ARMED    --TV >= threshold, enough evidence, hold-off passed-->  PENDING (request sent)
+//   PENDING  --answered(D'), D' is the D requested-->                ARMED
 //   PENDING  --answered(D'), TV(D', estimate) <  rearm_threshold-->  ARMED
-//   PENDING  --answered(D'), TV(D', estimate) >= rearm_threshold-->  HELD
+//   PENDING  --answered(D'), otherwise-->                            HELD
 //   PENDING  --no answer for answer_timeout_s-->                     ARMED (a timeout)
 //   HELD     --TV < rearm_threshold-->                               ARMED
 //   HELD     --TV >= threshold and retry_s since the request-->      PENDING (a retry)
@@ -14,10 +15,12 @@
 // reference to the D the design was made for, so the next request needs the estimate to move
 // `threshold` away from there (a band of width `threshold` around every evaluated D, the
 // hysteresis that keeps a D near a design boundary from flipping the design back and forth);
-// and a request needs `holdoff_arrivals` fresh arrivals since the previous one. HELD covers
-// an answer that left the estimate far from the design's D (the coordinator evaluated an
-// older D, or refused): asking again at every arrival would flap, so it asks only after
-// `retry_s`.
+// and a request needs `holdoff_arrivals` fresh arrivals since the previous one. An answer
+// for the D requested (within rearm_threshold) re-arms at once, even if the estimate moved on
+// meanwhile: that is drift going on, and the next request follows it. HELD covers an answer
+// for another D that leaves the estimate far from the design's (the coordinator evaluated
+// something else, or refused): asking again at every arrival would flap, so it asks only
+// after `retry_s`, or re-arms once the estimate comes back within rearm_threshold.
 //
 // Example (two tasks, threshold 0.2):
 //   DriftDetector d(config, {{"a", 0.9}, {"b", 0.1}});
@@ -47,9 +50,9 @@ public:
     // and the time (seconds on a monotonic clock). True: send a re-evaluation request now.
     bool observe(const Distribution &estimate, double samples, double now);
 
-    // A request whatever the distance (a new task must be evaluated): true unless one is
-    // already PENDING.
-    bool force(double now);
+    // A request for `requested` whatever the distance (a new task must be evaluated, or the
+    // first design made): true unless one is already PENDING.
+    bool force(double now, const Distribution &requested);
 
     // The D of the design now in force (the coordinator's answer, or any new result for the
     // problem), with the estimate at that moment.
@@ -62,10 +65,11 @@ public:
     long long timeouts() const { return timeouts_; }
 
 private:
-    bool request(double now);
+    bool request(double now, const Distribution &requested);
 
     DriftConfig config_;
     Distribution reference_;
+    Distribution requested_; // the D of the last request
     DriftState state_ = DriftState::ARMED;
     double last_tv_ = 0;
     double requested_at_ = 0;

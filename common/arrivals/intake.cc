@@ -46,15 +46,22 @@ Verdict ArrivalIntake::check(const Arrival &arrival, bool problem_known, double 
                              int64_t now_utime) {
     ++counters_.received;
     Verdict verdict = check_fields(arrival, problem_known, now_utime);
-    if (verdict == Verdict::ACCEPTED) {
+    // The sequence is followed for every sample that names a known problem and a usable
+    // site, good content or not: a sample that arrived is not a lost one.
+    bool trackable =
+        problem_known && arrival.sequence > 0 && good_name(arrival.site, config_.max_name_length);
+    if (trackable) {
         auto key = std::make_pair(arrival.problem_id, arrival.site);
         auto it = sites_.find(key);
         if (it == sites_.end() && sites_.size() >= config_.max_sites) {
-            verdict = Verdict::TOO_MANY_SITES;
+            if (verdict == Verdict::ACCEPTED)
+                verdict = Verdict::TOO_MANY_SITES;
         } else {
             if (it == sites_.end())
                 it = sites_.emplace(key, Site{0, config_.burst, now}).first;
-            verdict = check_sequence(it->second, arrival.sequence);
+            Verdict order = check_sequence(it->second, arrival.sequence);
+            if (verdict == Verdict::ACCEPTED)
+                verdict = order;
             if (verdict == Verdict::ACCEPTED && !take_token(it->second, now))
                 verdict = Verdict::RATE_LIMITED;
         }
@@ -83,7 +90,8 @@ Verdict ArrivalIntake::check_fields(const Arrival &a, bool problem_known, int64_
 }
 
 Verdict ArrivalIntake::check_sequence(Site &site, int64_t sequence) {
-    if (site.last_sequence == 0) { // the first arrival seen from this site: no gap to count
+    if (site.last_sequence == 0) { // the first arrival seen from this site
+        counters_.sequence_unseen += sequence - 1;
         site.last_sequence = sequence;
         return Verdict::ACCEPTED;
     }
@@ -122,6 +130,19 @@ LogThrottle::Decision LogThrottle::should_log(Verdict verdict, double now) {
     }
     ++k.suppressed;
     return {};
+}
+
+std::vector<std::pair<Verdict, long long>> LogThrottle::overdue(double now) {
+    std::vector<std::pair<Verdict, long long>> out;
+    for (int v = 0; v < VERDICTS; ++v) {
+        Kind &k = kinds_[v];
+        if (k.suppressed > 0 && now - k.logged_at >= interval_s_) {
+            out.emplace_back(static_cast<Verdict>(v), k.suppressed);
+            k.suppressed = 0;
+            k.logged_at = now;
+        }
+    }
+    return out;
 }
 
 } // namespace envdesign::arrivals

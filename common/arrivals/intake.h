@@ -17,8 +17,12 @@
 //   TOO_MANY_SITES   a new (problem, site) beyond max_sites (bounds the bridge's memory)
 //   RATE_LIMITED     beyond max_rate arrivals per second from this (problem, site), with a
 //                    burst of `burst` (a token bucket on the bridge's monotonic clock)
-// Accepted arrivals whose sequence skips numbers add the skipped count to `sequence_gaps`
-// (samples lost on the way, or overwritten in the reader's history during a flood).
+// Sequence numbers are followed for every sample of a known problem with a usable site,
+// whatever else is wrong with it (it did arrive). Arrivals whose sequence skips numbers add
+// the skipped count to `sequence_gaps`
+// (samples lost on the way, or overwritten in the reader's history during a flood); the
+// first arrival seen from a site adds the numbers before it to `sequence_unseen` (a bridge
+// that starts late cannot tell those sent before it from those lost).
 //
 // Not thread-safe; the bridge calls it from the thread that takes the DDS samples.
 
@@ -28,6 +32,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace envdesign::arrivals {
 
@@ -62,6 +67,8 @@ struct IntakeCounters {
     long long received = 0;
     long long by_verdict[VERDICTS] = {}; // indexed by Verdict; [ACCEPTED] counts accepted
     long long sequence_gaps = 0;         // sequence numbers skipped by accepted arrivals
+    long long sequence_unseen = 0;       // numbers before the first arrival seen from a site:
+                                         // sent before the bridge started, or lost
     long long site_restarts = 0;         // sequence 1 again after a higher one
 
     long long count(Verdict v) const { return by_verdict[static_cast<int>(v)]; }
@@ -106,6 +113,9 @@ public:
         long long suppressed = 0; // samples of this kind not logged since the last line
     };
     Decision should_log(Verdict verdict, double now);
+    // Kinds with samples not logged for `interval_s`, and how many: for a summary line once a
+    // flood has stopped (nothing else would say how much was left out). Resets their counts.
+    std::vector<std::pair<Verdict, long long>> overdue(double now);
 
 private:
     struct Kind {

@@ -2,7 +2,17 @@
 
 namespace envdesign::arrivals {
 
-const char *to_string(Reason reason) { return reason == Reason::NEW_TASK ? "new_task" : "drift"; }
+const char *to_string(Reason reason) {
+    switch (reason) {
+    case Reason::INITIAL:
+        return "initial";
+    case Reason::NEW_TASK:
+        return "new_task";
+    case Reason::DRIFT:
+        return "drift";
+    }
+    return "?";
+}
 
 ArrivalTracker::ArrivalTracker(TrackerConfig config) : config_(config), intake_(config.intake) {}
 
@@ -22,6 +32,15 @@ void ArrivalTracker::add_problem(const std::string &id, const Distribution &refe
     problems_.insert_or_assign(id, std::move(p));
 }
 
+Request ArrivalTracker::initial_request(const std::string &id, double now) {
+    Problem &p = problems_.at(id);
+    p.detector.force(now, p.detector.reference());
+    Request r = make_request(p, Reason::INITIAL);
+    r.estimate = r.reference; // the spec's D, whatever arrived already
+    r.distance = 0;
+    return r;
+}
+
 Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_utime) {
     auto it = problems_.find(arrival.problem_id);
     Outcome out;
@@ -29,7 +48,7 @@ Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_
     if (out.verdict != Verdict::ACCEPTED)
         return out;
     Problem &p = it->second;
-    out.use = classify(p, arrival);
+    out.use = classify(p, arrival, out.first_of_name);
     if (out.use == Use::UNKNOWN_TASK)
         return out;
     p.estimator.add(arrival.task);
@@ -37,19 +56,25 @@ Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_
     Distribution estimate = p.estimator.estimate();
     bool drifted = p.detector.observe(estimate, p.estimator.effective_samples(), now);
     if (out.use == Use::NEW_TASK && !drifted && p.detector.state() != DriftState::PENDING)
-        drifted = p.detector.force(now);
+        drifted = p.detector.force(now, estimate);
     if (drifted)
         out.request = make_request(p, out.use == Use::NEW_TASK ? Reason::NEW_TASK : Reason::DRIFT);
     return out;
 }
 
-Use ArrivalTracker::classify(Problem &p, const Arrival &arrival) {
+Use ArrivalTracker::classify(Problem &p, const Arrival &arrival, bool &first_of_name) {
     const std::string &task = arrival.task;
     if (p.tasks.count(task) || p.proposed.count(task))
         return Use::ESTIMATED;
     if (arrival.problem.empty() || p.refused.count(task)) {
         ++p.status.unknown_task;
-        ++p.status.unknown_task_names[task];
+        auto &names = p.status.unknown_task_names;
+        auto it = names.find(task);
+        first_of_name = it == names.end();
+        if (it != names.end())
+            ++it->second;
+        else if (names.size() < ProblemStatus::MAX_UNKNOWN_NAMES)
+            names.emplace(task, 1);
         return Use::UNKNOWN_TASK;
     }
     p.proposed[task] = {task, arrival.problem, arrival.human_problem};
@@ -92,8 +117,9 @@ std::optional<Request> ArrivalTracker::answered(const std::string &id,
             p.sent.erase(t->first);
         t = done ? p.proposed.erase(t) : std::next(t);
     }
-    p.detector.answered(reference, p.estimator.estimate());
-    if (p.proposed.empty() || !p.detector.force(now))
+    Distribution estimate = p.estimator.estimate();
+    p.detector.answered(reference, estimate);
+    if (p.proposed.empty() || !p.detector.force(now, estimate))
         return std::nullopt;
     return make_request(p, Reason::NEW_TASK);
 }

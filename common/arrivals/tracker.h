@@ -44,7 +44,11 @@ struct NewTask {
     std::string human_problem; // empty: `problem`
 };
 
-enum class Reason { DRIFT, NEW_TASK };
+enum class Reason {
+    INITIAL,  // the design for the spec's D, asked for when tracking starts
+    DRIFT,    // TV(reference, estimate) passed the threshold
+    NEW_TASK, // a new task came with its problem
+};
 const char *to_string(Reason reason);
 
 // Asks the coordinator to re-evaluate one design problem for a new D.
@@ -63,6 +67,7 @@ enum class Use { REJECTED, ESTIMATED, NEW_TASK, UNKNOWN_TASK };
 struct Outcome {
     Verdict verdict = Verdict::ACCEPTED;
     Use use = Use::REJECTED;
+    bool first_of_name = false; // UNKNOWN_TASK: the first arrival of this task name
     std::optional<Request> request;
 };
 
@@ -80,7 +85,10 @@ struct ProblemStatus {
     long long refused_tasks = 0;
     long long requests = 0;
     long long timeouts = 0;
+    // Arrivals per unknown task name; the first MAX_UNKNOWN_NAMES names only (a flood of
+    // made-up names must not grow the bridge without bound), the rest only in unknown_task.
     std::map<std::string, long long> unknown_task_names;
+    static constexpr std::size_t MAX_UNKNOWN_NAMES = 1000;
 };
 
 class ArrivalTracker {
@@ -91,6 +99,10 @@ public:
     // the problem's tasks). Replaces an earlier one with the same id.
     void add_problem(const std::string &id, const Distribution &reference);
     bool tracks(const std::string &id) const { return problems_.count(id) > 0; }
+
+    // A request for problem `id` went out that the tracker did not make (the INITIAL one):
+    // no other goes out until it is answered. Returns that request.
+    Request initial_request(const std::string &id, double now);
 
     // `now`: seconds on a monotonic clock; `now_utime`: wall clock, microseconds since epoch.
     Outcome receive(const Arrival &arrival, double now, int64_t now_utime);
@@ -116,7 +128,7 @@ private:
         ProblemStatus status;
     };
 
-    Use classify(Problem &p, const Arrival &arrival);
+    Use classify(Problem &p, const Arrival &arrival, bool &first_of_name);
     Request make_request(Problem &p, Reason reason);
 
     TrackerConfig config_;

@@ -28,6 +28,10 @@ void set_common(const Qos &qos, int history) {
 Qos arrival_writer_qos(int history) {
     Qos qos;
     set_common(qos, history);
+    // What a late reader gets: Cyclone keeps a TRANSIENT_LOCAL writer's samples for late
+    // joiners by the durability service's history (default KEEP_LAST 1), not by HISTORY.
+    dds_qset_durability_service(qos.get(), 0, DDS_HISTORY_KEEP_LAST, history, DDS_LENGTH_UNLIMITED,
+                                DDS_LENGTH_UNLIMITED, DDS_LENGTH_UNLIMITED);
     // A site that goes away does not dispose its instance: its arrivals happened; the
     // estimate forgets them by later arrivals (estimator.h), not by writer liveliness.
     dds_qset_writer_data_lifecycle(qos.get(), false);

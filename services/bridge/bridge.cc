@@ -12,9 +12,9 @@
 namespace envdesign::bridge {
 namespace {
 
-constexpr double WAIT_S = 0.2;       // the reader thread checks for shutdown this often
-constexpr double HEARTBEAT_S = 1.0;  // estimates of idle problems, this often
-constexpr std::size_t BATCH = 4096;  // samples taken at once
+constexpr double WAIT_S = 0.2;      // the reader thread checks for shutdown this often
+constexpr double HEARTBEAT_S = 1.0; // estimates of idle problems, this often
+constexpr std::size_t BATCH = 4096; // samples taken at once
 
 arrivals::Distribution spec_distribution(const design::DesignProblem &problem) {
     arrivals::Distribution d;
@@ -51,8 +51,8 @@ Bridge::Bridge(bus::Bus &bus, BridgeConfig config)
         backend_ = std::make_unique<LocalRedesigns>(bus_, config_.instance, std::move(problems),
                                                     config_.local, answered);
     else
-        backend_ = std::make_unique<CoordinatorRedesigns>(
-            bus_, config_.instance, std::move(specs), config_.coordinator, answered);
+        backend_ = std::make_unique<CoordinatorRedesigns>(bus_, config_.instance, std::move(specs),
+                                                          config_.coordinator, answered);
     results_.emplace(bus_.subscribe<envdesign::design_result_t>(
         bus::RESULT, [this](const envdesign::design_result_t &r) { backend_->on_result(r); }));
     reader_ = std::make_unique<dds::ArrivalReader>(config_.domain, config_.reader_history);
@@ -94,6 +94,7 @@ void Bridge::read_arrivals() {
 void Bridge::take_batch(std::vector<arrivals::Arrival> &batch) {
     batch.clear();
     reader_->take(batch, BATCH);
+    bus_.log().trace("request - | took {} arrivals", batch.size());
     std::lock_guard lock(mutex_);
     double t = now();
     std::int64_t utime = bus::now_utime();
@@ -105,7 +106,8 @@ void Bridge::take_batch(std::vector<arrivals::Arrival> &batch) {
 
 void Bridge::receive(const arrivals::Arrival &arrival, double t, std::int64_t utime) {
     arrivals::Outcome outcome = tracker_.receive(arrival, t, utime);
-    if (outcome.verdict != arrivals::Verdict::ACCEPTED || outcome.use == arrivals::Use::UNKNOWN_TASK)
+    if (outcome.verdict != arrivals::Verdict::ACCEPTED ||
+        outcome.use == arrivals::Use::UNKNOWN_TASK)
         log_rejected(arrival, outcome, t);
     if (outcome.use == arrivals::Use::NEW_TASK)
         bus_.log().info("request - | {}: new task {} from site {}, with its problem ({} bytes)",
@@ -145,14 +147,13 @@ void Bridge::send(const arrivals::Request &request) {
     m.request_id = id;
     m.sender = config_.instance;
     bus_.publish(REEVALUATE, m);
-    bus_.log().info("request {} | {}: re-evaluate ({}): D {} vs the design's {} (TV {:.3f}, {:.0f} "
-                    "samples){}",
-                    bus::request_name(config_.instance, id), request.problem_id,
-                    arrivals::to_string(request.reason), arrivals::to_string(request.estimate),
-                    arrivals::to_string(request.reference), request.distance, request.samples,
-                    request.new_tasks.empty()
-                        ? ""
-                        : fmt::format(", {} new task(s)", request.new_tasks.size()));
+    bus_.log().info(
+        "request {} | {}: re-evaluate ({}): D {} vs the design's {} (TV {:.3f}, {:.0f} "
+        "samples){}",
+        bus::request_name(config_.instance, id), request.problem_id,
+        arrivals::to_string(request.reason), arrivals::to_string(request.estimate),
+        arrivals::to_string(request.reference), request.distance, request.samples,
+        request.new_tasks.empty() ? "" : fmt::format(", {} new task(s)", request.new_tasks.size()));
     backend_->start(id, request);
     publish_estimate(request.problem_id, now(), true);
 }
@@ -197,6 +198,9 @@ void Bridge::tick() {
     double t = now();
     for (const auto &[id, published] : problems_)
         publish_estimate(id, t, false);
+    for (const auto &[verdict, count] : throttle_.overdue(t))
+        bus_.log().warn("request - | {} more bad arrivals ({}) not logged", count,
+                        arrivals::to_string(verdict));
 }
 
 BridgeStats Bridge::stats() const {

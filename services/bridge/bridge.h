@@ -92,8 +92,8 @@ private:
     arrivals::LogThrottle throttle_;
     struct Published {
         DesignInForce design;
-        double at = -1e9;          // last estimate sent
-        long long estimated = -1;  // the problem's estimated count then
+        double at = -1e9;         // last estimate sent
+        long long estimated = -1; // the problem's estimated count then
     };
     std::map<std::string, Published> problems_;
     std::int64_t next_request_id_ = 0;

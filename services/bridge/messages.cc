@@ -58,6 +58,7 @@ void put_counters(task_distribution_t &m, const arrivals::ProblemStatus &status,
     m.estimated = status.estimated;
     m.unknown_task = status.unknown_task;
     m.sequence_gaps = counters.sequence_gaps;
+    m.sequence_unseen = counters.sequence_unseen;
     for (int v = 1; v < arrivals::VERDICTS; ++v) {
         m.rejected_kinds.push_back(arrivals::to_string(static_cast<arrivals::Verdict>(v)));
         m.rejected_counts.push_back(counters.by_verdict[v]);

@@ -78,8 +78,8 @@ void LocalRedesigns::redesign(const Job &job) {
     try {
         arrivals::Redesign out = r.redesign(job.request.estimate, job.request.new_tasks);
         message = cluster::result_message(r.problem(), out.result, {});
-        answer.design = {out.change.after_names, out.change.objective_after,
-                         out.change.explanation, job.request_id};
+        answer.design = {out.change.after_names, out.change.objective_after, out.change.explanation,
+                         job.request_id};
         answer.reference = r.distribution();
         bus_.log().info("request {} | {}: {} ({} planner runs, {} configurations from the store, "
                         "{:.3f} ms)",
@@ -87,10 +87,10 @@ void LocalRedesigns::redesign(const Job &job) {
                         out.change.planner_runs, out.change.stored_answers,
                         out.change.seconds * 1e3);
     } catch (const std::exception &e) { // a spec model that does not ground: keep the design
-        message = cluster::error_result(dynamic_cast<const pddl::ParseError *>(&e) ? 2 : 1,
-                                        e.what());
-        answer.design = {{}, NOT_KNOWN, std::string("re-evaluation failed: ") + e.what(),
-                         job.request_id};
+        message =
+            cluster::error_result(dynamic_cast<const pddl::ParseError *>(&e) ? 2 : 1, e.what());
+        answer.design = {
+            {}, NOT_KNOWN, std::string("re-evaluation failed: ") + e.what(), job.request_id};
         bus_.log().error("request {} | {}: {}", bus::request_name(instance_, job.request_id), id,
                          e.what());
     }
@@ -107,15 +107,15 @@ void LocalRedesigns::redesign(const Job &job) {
 CoordinatorRedesigns::CoordinatorRedesigns(bus::Bus &bus, std::string instance,
                                            std::map<std::string, envdesign::spec_t> specs,
                                            CoordinatorRequestOptions options, Answered answered)
-    : bus_(bus), instance_(std::move(instance)), options_(options),
-      answered_(std::move(answered)), specs_(std::move(specs)) {}
+    : bus_(bus), instance_(std::move(instance)), options_(options), answered_(std::move(answered)),
+      specs_(std::move(specs)) {}
 
 void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Request &request) {
     envdesign::design_request_t m{};
     {
         std::lock_guard lock(mutex_);
-        m.spec = with_distribution(specs_.at(request.problem_id), request.estimate,
-                                   request.new_tasks);
+        m.spec =
+            with_distribution(specs_.at(request.problem_id), request.estimate, request.new_tasks);
         pending_[request_id] = {request.problem_id, m.spec};
     }
     m.utime = bus::now_utime();
@@ -142,8 +142,8 @@ void CoordinatorRedesigns::on_result(const envdesign::design_result_t &result) {
         std::vector<std::string> &before = designs_[id];
         if (!result.has_design) {
             answer.design = {before, NOT_KNOWN,
-                             "the coordinator gave no design (" + result.status + "): " +
-                                 result.error,
+                             "the coordinator gave no design (" + result.status +
+                                 "): " + result.error,
                              result.request_id};
         } else {
             specs_[id] = pending.spec; // the new tasks are the problem's now

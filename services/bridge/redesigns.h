@@ -100,9 +100,9 @@ private:
     CoordinatorRequestOptions options_;
     Answered answered_;
     std::mutex mutex_; // start() on the DDS thread, on_result() on the bus thread
-    std::map<std::string, envdesign::spec_t> specs_;            // with new tasks taken in
-    std::map<std::string, std::vector<std::string>> designs_;   // the last design per problem
-    std::map<std::string, arrivals::Distribution> references_;  // its D
+    std::map<std::string, envdesign::spec_t> specs_;           // with new tasks taken in
+    std::map<std::string, std::vector<std::string>> designs_;  // the last design per problem
+    std::map<std::string, arrivals::Distribution> references_; // its D
     std::map<std::int64_t, Pending> pending_;
 };
 

@@ -16,6 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
+envdesign::spec_file_t file_message(const std::string &path, const std::string &content) {
+    envdesign::spec_file_t f;
+    f.path = path;
+    f.content = content;
+    return f;
+}
+
 bool is_json(const std::string &name) { return name.size() >= 5 && name.ends_with(".json"); }
 
 std::string read_file(const fs::path &path, const pddl::Location &where) {
@@ -27,7 +34,7 @@ std::string read_file(const fs::path &path, const pddl::Location &where) {
     return text.str();
 }
 
-std::string print(const design::proto::DesignProblem &message, const std::string &name) {
+std::string print(const proto::DesignProblem &message, const std::string &name) {
     std::string text;
     if (is_json(name)) {
         google::protobuf::util::JsonPrintOptions options;
@@ -53,7 +60,7 @@ envdesign::spec_t read_spec_message(const std::string &spec_path) {
             return;
         fs::path full = fs::path(path).is_absolute() ? fs::path(path)
                                                      : fs::path(spec_path).parent_path() / path;
-        m.files.push_back({path, read_file(full, spec.at(field))});
+        m.files.push_back(file_message(path, read_file(full, spec.at(field))));
     };
     const auto &p = spec.message;
     add(p.robot_domain(), "robot_domain");
@@ -70,7 +77,7 @@ envdesign::spec_t read_spec_message(const std::string &spec_path) {
 envdesign::spec_t with_distribution(const envdesign::spec_t &spec, const arrivals::Distribution &d,
                                     const std::vector<arrivals::NewTask> &new_tasks) {
     design::SpecFile parsed = design::read_spec_text(spec.text, spec.name);
-    design::proto::DesignProblem &message = parsed.message;
+    proto::DesignProblem &message = parsed.message;
     envdesign::spec_t out = spec;
     for (const auto &task : new_tasks) {
         // Files are named by the task's index: a name from the wire ("../x") is no path.
@@ -78,10 +85,10 @@ envdesign::spec_t with_distribution(const envdesign::spec_t &spec, const arrival
         auto *t = message.add_task();
         t->set_name(task.name);
         t->set_problem(file + ".pddl");
-        out.files.push_back({t->problem(), task.problem});
+        out.files.push_back(file_message(t->problem(), task.problem));
         if (!task.human_problem.empty()) {
             t->set_human_problem(file + "-human.pddl");
-            out.files.push_back({t->human_problem(), task.human_problem});
+            out.files.push_back(file_message(t->human_problem(), task.human_problem));
         }
     }
     for (auto &t : *message.mutable_task()) {

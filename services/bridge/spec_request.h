@@ -18,7 +18,8 @@ envdesign::spec_t read_spec_message(const std::string &spec_path);
 
 // `spec` with each task's probability set from `d` (a task `d` leaves out: 0) and
 // `new_tasks` appended, their problems inlined as "new-tasks/task-I.pddl" (and
-// "new-tasks/task-I-human.pddl"), I the task's index. Throws pddl::ParseError if the spec text does not parse.
+// "new-tasks/task-I-human.pddl"), I the task's index. Throws pddl::ParseError if the spec text does
+// not parse.
 envdesign::spec_t with_distribution(const envdesign::spec_t &spec, const arrivals::Distribution &d,
                                     const std::vector<arrivals::NewTask> &new_tasks);
 

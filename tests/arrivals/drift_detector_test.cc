@@ -126,9 +126,22 @@ TEST(DriftDetector, AnswerWithNoEstimateArms) {
 
 TEST(DriftDetector, ForceUnlessPending) {
     DriftDetector d(config(), ab(0.9));
-    EXPECT_TRUE(d.force(0));
-    EXPECT_FALSE(d.force(0));
+    EXPECT_TRUE(d.force(0, ab(0.9)));
+    EXPECT_FALSE(d.force(0, ab(0.9)));
     EXPECT_EQ(d.requests(), 1);
+}
+
+// The answer is for the D requested (0.6) but arrivals went on meanwhile (now 0.2): that is
+// drift going on, not a stale answer; armed, and the next arrival past the hold-off asks
+// for 0.2.
+TEST(DriftDetector, AnswerAsRequestedRearmsWhileDriftGoesOn) {
+    DriftDetector d(config(), ab(0.9));
+    ASSERT_TRUE(d.observe(ab(0.6), 100, 0));
+    for (int i = 0; i < 10; ++i)
+        d.observe(ab(0.2), 100, 1);
+    d.answered(ab(0.6), ab(0.2));
+    EXPECT_EQ(d.state(), DriftState::ARMED);
+    EXPECT_TRUE(d.observe(ab(0.2), 100, 2)); // 11 arrivals since the request
 }
 
 } // namespace

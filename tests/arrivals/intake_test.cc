@@ -83,6 +83,22 @@ TEST(Intake, SequenceNumbers) {
     EXPECT_EQ(intake.counters().sequence_gaps, 2);
 }
 
+// A sample with bad content still arrived: its number is no gap. 1 (empty task), 2 (bad
+// timestamp), 3: no gap; 3 again is a duplicate even with an empty task? No: the content
+// verdict comes first.
+TEST(Intake, RejectedSamplesStillCountInTheSequence) {
+    ArrivalIntake intake({});
+    Arrival empty = arrival("", 1);
+    Arrival old = arrival("a", 2);
+    old.utime = 5;
+    EXPECT_EQ(intake.check(empty, true, 0, NOW_UTIME), Verdict::EMPTY_TASK);
+    EXPECT_EQ(intake.check(old, true, 0, NOW_UTIME), Verdict::BAD_TIMESTAMP);
+    EXPECT_EQ(intake.check(arrival("a", 3), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_EQ(intake.check(arrival("", 3), true, 0, NOW_UTIME), Verdict::EMPTY_TASK);
+    EXPECT_EQ(intake.counters().sequence_gaps, 0);
+    EXPECT_EQ(intake.counters().sequence_unseen, 0);
+}
+
 // Sites are numbered separately; a late joiner's first sample (sequence 40) is no gap.
 TEST(Intake, SitesAreSeparate) {
     ArrivalIntake intake({});
@@ -90,6 +106,7 @@ TEST(Intake, SitesAreSeparate) {
     EXPECT_EQ(intake.check(arrival("a", 1, "s2"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
     EXPECT_EQ(intake.check(arrival("a", 41, "s1"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
     EXPECT_EQ(intake.counters().sequence_gaps, 0);
+    EXPECT_EQ(intake.counters().sequence_unseen, 39); // 1..39 of s1
 }
 
 // 10/s with a burst of 5: 5 at once pass, the 6th is limited; 0.1 s later one more passes.
@@ -133,6 +150,20 @@ TEST(LogThrottle, FirstFewThenPeriodic) {
     EXPECT_TRUE(d.log);
     EXPECT_EQ(d.suppressed, 50);
     EXPECT_FALSE(throttle.should_log(Verdict::EMPTY_TASK, 11).log);
+}
+
+// After a flood stops, the summary of what was left out comes from overdue(), once.
+TEST(LogThrottle, OverdueSummaries) {
+    LogThrottle throttle(1, 10);
+    throttle.should_log(Verdict::RATE_LIMITED, 0);
+    for (int i = 0; i < 7; ++i)
+        throttle.should_log(Verdict::RATE_LIMITED, 1);
+    EXPECT_TRUE(throttle.overdue(9).empty());
+    auto due = throttle.overdue(10);
+    ASSERT_EQ(due.size(), 1u);
+    EXPECT_EQ(due[0].first, Verdict::RATE_LIMITED);
+    EXPECT_EQ(due[0].second, 7);
+    EXPECT_TRUE(throttle.overdue(30).empty());
 }
 
 } // namespace

@@ -1,0 +1,114 @@
+#pragma once
+// Shared by the real-process tests of the bridge: paths, the loopback DDS configuration,
+// replay files, and starting the bridge, the publisher, the coordinator and planners.
+
+#include "listener.h"
+#include "process.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace envdesign::testing {
+
+inline const std::string BIN = ENVDESIGN_BIN_DIR;
+inline const std::string SOURCE = ENVDESIGN_SOURCE_DIR;
+inline const std::string DRIFT_SPEC = SOURCE + "/tests/arrivals/data/restaurant-drift.textproto";
+
+// Every child process talks DDS on loopback only (deploy/cyclonedds-loopback.xml).
+inline std::vector<std::string> dds_env() {
+    return {"CYCLONEDDS_URI=file://" + SOURCE + "/deploy/cyclonedds-loopback.xml"};
+}
+
+// Tests isolate LCM by port (PLATFORM.md §3) and DDS by domain id.
+inline std::string lcm_url(int port) {
+    return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
+}
+
+// A scratch directory for one test's logs and replay files.
+inline std::string scratch(const std::string &name) {
+    auto dir = std::filesystem::path(::testing::TempDir()) / ("bridge-" + name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir.string();
+}
+
+// A replay file: `header` then one row a line.
+inline std::string write_replay(const std::string &path, const std::string &header,
+                                const std::vector<std::string> &rows) {
+    std::ofstream out(path);
+    out << header << "\n";
+    for (const auto &r : rows)
+        out << r << "\n";
+    return path;
+}
+
+// `count` arrivals in blocks of ten: `first` of serve-g1, then serve-g2, so any window of
+// a multiple of ten arrivals holds exactly that mix.
+inline std::vector<std::string> booth_mix(int count, int first) {
+    std::vector<std::string> rows;
+    for (int i = 0; i < count; ++i)
+        rows.push_back(i % 10 < first ? "serve-g1" : "serve-g2");
+    return rows;
+}
+
+inline std::unique_ptr<Process> start_bridge(const std::string &dir, int domain, int port,
+                                             std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv = {BIN + "/envdesign-bridge",
+                                     "--problem",
+                                     "restaurant=" + DRIFT_SPEC,
+                                     "--domain",
+                                     std::to_string(domain),
+                                     "--lcm-url",
+                                     lcm_url(port),
+                                     "--name",
+                                     "bridge/test",
+                                     "--publish-hz",
+                                     "50"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    return std::make_unique<Process>(argv, dds_env(), dir + "/bridge.log");
+}
+
+// Publishes a replay file for problem "restaurant" and waits for it to finish.
+inline int publish(const std::string &dir, const std::string &replay, int domain,
+                   std::vector<std::string> extra = {}, const std::string &site = "dock-1") {
+    std::vector<std::string> argv = {BIN + "/envdesign-arrivals",
+                                     "--replay",
+                                     replay,
+                                     "--problem",
+                                     "restaurant",
+                                     "--site",
+                                     site,
+                                     "--domain",
+                                     std::to_string(domain),
+                                     "--wait-bridge",
+                                     "20"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    Process p(argv, dds_env(),
+              dir + "/arrivals-" + std::filesystem::path(replay).stem().string() + ".log");
+    auto rc = p.wait(std::chrono::seconds(60));
+    EXPECT_TRUE(rc) << "envdesign-arrivals did not finish:\n" << p.output();
+    EXPECT_EQ(rc.value_or(-1), 0) << p.output();
+    return rc.value_or(-1);
+}
+
+// The estimate's probability of `task` (0 if absent).
+inline double probability(const envdesign::task_distribution_t &m, const std::string &task) {
+    for (int i = 0; i < m.num_tasks; ++i)
+        if (m.tasks[i] == task)
+            return m.probabilities[i];
+    return 0;
+}
+
+inline long long rejected(const envdesign::task_distribution_t &m, const std::string &kind) {
+    for (int i = 0; i < m.num_rejected; ++i)
+        if (m.rejected_kinds[i] == kind)
+            return m.rejected_counts[i];
+    return -1;
+}
+
+} // namespace envdesign::testing
