@@ -22,9 +22,9 @@ TEST(Cluster, TwoPlannersGiveTheLocalResult) {
           "tests/e2e/data/warehouse-small/signs-1.textproto"}) {
         SCOPED_TRACE(spec);
         static std::int64_t id = 0;
-        auto result = cluster.request(request_of(data(spec), ++id));
+        auto result = cluster.request(request_of(in_repo(spec), ++id));
         ASSERT_EQ(result.exit_code, 0) << result.error;
-        expect_same_design(json_of(result), local_result(data(spec)));
+        expect_same_design(json_of(result), local_result(in_repo(spec)));
         EXPECT_EQ(result.counters.jobs_resent, 0);
         EXPECT_EQ(result.counters.duplicates_ignored, 0);
     }
@@ -99,7 +99,7 @@ private:
 };
 
 TEST(Cluster, LostDuplicatedAndLateAnswersChangeNothing) {
-    std::string spec = data("examples/restaurant/c-two-tasks-t10.textproto");
+    std::string spec = in_repo("examples/restaurant/c-two-tasks-t10.textproto");
     std::shared_ptr<FlakyPlanner> flaky;
     MemqCluster cluster(1, 1, [&](bus::Bus &bus) {
         flaky = std::make_shared<FlakyPlanner>(bus, spec);
@@ -115,7 +115,7 @@ TEST(Cluster, LostDuplicatedAndLateAnswersChangeNothing) {
 
 TEST(Cluster, BadInputIsExit2NamingTheClientsFile) {
     MemqCluster cluster(1);
-    auto request = request_of(data("examples/restaurant/c-two-tasks-t10.textproto"), 5);
+    auto request = request_of(in_repo("examples/restaurant/c-two-tasks-t10.textproto"), 5);
     for (auto &file : request.spec.files)
         if (file.path == "domain.pddl")
             file.content = "(define (domain restaurant)\n  (:predicates (p)\n";
@@ -125,7 +125,7 @@ TEST(Cluster, BadInputIsExit2NamingTheClientsFile) {
     EXPECT_NE(result.error.find("examples/restaurant/domain.pddl:"), std::string::npos)
         << result.error;
 
-    auto missing = request_of(data("examples/restaurant/c-two-tasks-t10.textproto"), 6);
+    auto missing = request_of(in_repo("examples/restaurant/c-two-tasks-t10.textproto"), 6);
     missing.spec.files.pop_back();
     missing.spec.num_files = static_cast<std::int16_t>(missing.spec.files.size());
     result = cluster.request(missing);
@@ -135,7 +135,7 @@ TEST(Cluster, BadInputIsExit2NamingTheClientsFile) {
 
 TEST(Cluster, RepeatedRequestIsAnsweredFromRecord) {
     MemqCluster cluster(1);
-    auto request = request_of(data("examples/restaurant/b-two-tasks-t1.textproto"), 9);
+    auto request = request_of(in_repo("examples/restaurant/b-two-tasks-t1.textproto"), 9);
     auto first = cluster.request(request);
     auto again = cluster.request(request);
     EXPECT_EQ(client::result_json(first), client::result_json(again));
@@ -149,17 +149,17 @@ TEST(Cluster, SeveralRequestsAtOnce) {
                                       "tests/e2e/data/warehouse-small/signs-1.textproto",
                                       "examples/restaurant/a-one-task-t1.textproto"};
     for (std::size_t i = 0; i < specs.size(); ++i)
-        cluster.bus().publish(bus::REQUEST, request_of(data(specs[i]), 100 + i));
+        cluster.bus().publish(bus::REQUEST, request_of(in_repo(specs[i]), 100 + i));
     for (std::size_t i = 0; i < specs.size(); ++i) {
         auto result = cluster.wait(100 + i);
         ASSERT_EQ(result.exit_code, 0) << result.error;
-        expect_same_design(json_of(result), local_result(data(specs[i])));
+        expect_same_design(json_of(result), local_result(in_repo(specs[i])));
     }
 }
 
 TEST(Cluster, CancelStopsTheSearchWithWhatItHas) {
     MemqCluster cluster(1);
-    auto request = request_of(data("tests/e2e/data/warehouse/signs-3.textproto"), 3);
+    auto request = request_of(in_repo("tests/e2e/data/warehouse/signs-3.textproto"), 3);
     cluster.bus().publish(bus::REQUEST, request);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     envdesign::cancel_t cancel{};
@@ -175,7 +175,7 @@ TEST(Cluster, CancelStopsTheSearchWithWhatItHas) {
 
 TEST(Cluster, RequestsThatMakeNoSenseAreCountedAndAnswered) {
     MemqCluster cluster(1);
-    auto request = request_of(data("examples/restaurant/a-one-task-t1.textproto"), 4);
+    auto request = request_of(in_repo("examples/restaurant/a-one-task-t1.textproto"), 4);
     request.heuristic = 9;
     auto result = cluster.request(request);
     EXPECT_EQ(result.exit_code, 2);

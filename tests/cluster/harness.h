@@ -32,7 +32,7 @@ inline std::shared_ptr<spdlog::logger> quiet_logger() {
     return log;
 }
 
-inline std::string data(const std::string &relative) {
+inline std::string in_repo(const std::string &relative) {
     return std::string(ENVDESIGN_TEST_DATA_ROOT) + "/" + relative;
 }
 

@@ -9,7 +9,7 @@ namespace envdesign::cluster::testing {
 namespace {
 
 TEST(SpecLoader, LoadsWhatTheClientBundled) {
-    std::string path = data("examples/restaurant/c-two-tasks-t10.textproto");
+    std::string path = in_repo("examples/restaurant/c-two-tasks-t10.textproto");
     envdesign::spec_t spec = client::bundle_spec(path);
     EXPECT_EQ(spec.files.size(), 5u);
     design::DesignProblem remote = load_spec(spec, std::filesystem::temp_directory_path());
@@ -20,14 +20,14 @@ TEST(SpecLoader, LoadsWhatTheClientBundled) {
 }
 
 TEST(SpecLoader, JsonSpecsToo) {
-    std::string path = data("tests/data/design/restaurant-c.json");
+    std::string path = in_repo("tests/data/design/restaurant-c.json");
     envdesign::spec_t spec = client::bundle_spec(path);
     EXPECT_FALSE(spec.files.empty());
     EXPECT_NO_THROW(load_spec(spec, std::filesystem::temp_directory_path()));
 }
 
 TEST(SpecLoader, ErrorsNameTheClientsFiles) {
-    std::string path = data("examples/restaurant/c-two-tasks-t10.textproto");
+    std::string path = in_repo("examples/restaurant/c-two-tasks-t10.textproto");
     envdesign::spec_t spec = client::bundle_spec(path);
     spec.files[1].content = "(define (problem p) (:domain restaurant) (:objects x - nothing))";
     try {
@@ -59,7 +59,7 @@ TEST(SpecBundle, FindsThePathFieldsOfTheTextFormat) {
 
 TEST(SpecBundle, MissingFileIsTheLocalMessage) {
     try {
-        client::bundle_spec(data("tests/data/design/bad/missing-file.textproto"));
+        client::bundle_spec(in_repo("tests/data/design/bad/missing-file.textproto"));
         FAIL() << "no error";
     } catch (const client::SpecError &e) {
         EXPECT_NE(std::string(e.what()).find("missing-file.textproto:"), std::string::npos);
