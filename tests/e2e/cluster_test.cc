@@ -173,6 +173,27 @@ TEST(EndToEnd, GarbageOnEveryChannelChangesNothing) {
     EXPECT_EQ(cluster.coordinator().wait(), 0);
 }
 
+// A spec of ~400 KB: the request spans several datagrams (LCM fragments it; the receive
+// buffer of the URL keeps them), the spec reaches planners in 32 KB chunks.
+TEST(EndToEnd, SpecFarLargerThanADatagram) {
+    namespace fs = std::filesystem;
+    fs::path copy = fs::temp_directory_path() / ("envdesign-big-" + std::to_string(getpid()));
+    fs::remove_all(copy);
+    fs::copy(source("examples/restaurant"), copy);
+    {
+        std::ofstream domain(copy / "domain.pddl", std::ios::app);
+        for (int i = 0; i < 5000; ++i)
+            domain << "; padding " << i << " " << std::string(60, 'x') << "\n";
+    }
+    std::string spec = (copy / "c-two-tasks-t10.textproto").string();
+    LocalCluster cluster(2);
+    client::Result result = client::run_design_remote(spec, cluster.url());
+    ASSERT_EQ(result.exit_code, 0) << result.error << cluster.logs();
+    expect_same_design(nlohmann::json::parse(result.json), self_contained(spec));
+    EXPECT_NE(cluster.planner(0).log().find("received"), std::string::npos);
+    fs::remove_all(copy);
+}
+
 TEST(EndToEnd, NoCoordinatorIsExit1) {
     client::Options options;
     options.give_up_after_s = 1;

@@ -1,0 +1,350 @@
+#!/usr/bin/env python3
+"""envdesign's Python client: the optimal design of a spec file from a running coordinator.
+
+    python3 clients/python/envdesign_client.py SPEC [--connect URL] [--json] [--timeout S]
+        [--time-limit S] [--max-design-size K] [--prune none|relevant] [--heuristic H]
+
+    import envdesign_client
+    result = envdesign_client.design("spec.textproto", "udpm://239.255.76.67:7667?ttl=0")
+    print(result["objective"])
+
+Debian ships no LCM Python module, so this speaks LCM's UDP multicast protocol itself (small
+and fragmented messages, stdlib sockets) and uses the classes lcm-gen writes for our types
+(pure Python: build/python/envdesign, or $ENVDESIGN_PYTHON_TYPES). Like the C++ client it
+inlines the PDDL files the spec names, re-sends the request while the coordinator is silent,
+cancels it when its own timeout passes, and exits with SPEC.md's codes.
+"""
+import argparse
+import json
+import math
+import os
+import random
+import re
+import socket
+import struct
+import sys
+import time
+import urllib.parse
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+for candidate in (os.environ.get("ENVDESIGN_PYTHON_TYPES", ""), HERE,  # HERE: installed
+                  os.path.join(HERE, "..", "..", "build", "python"),
+                  os.path.join(HERE, "..", "..", "share", "envdesign", "python")):
+    if candidate and os.path.isdir(os.path.join(candidate, "envdesign")):
+        sys.path.insert(0, candidate)
+        break
+from envdesign import (cancel_t, design_progress_t, design_request_t,  # noqa: E402
+                       design_result_t, spec_file_t, spec_t)
+
+DEFAULT_URL = "udpm://239.255.76.67:7667?ttl=0"
+SHORT_MAGIC, FRAGMENT_MAGIC = 0x4C433032, 0x4C433033
+SHORT_MAX = 1400      # LCM sends bigger messages as fragments
+FRAGMENT_BYTES = 60000
+
+
+class SpecError(Exception):
+    """The spec or a file it names cannot be read (exit code 2)."""
+
+
+class UdpmBus:
+    """LCM over UDP multicast (LCM's udpm:// provider), as far as a client needs it."""
+
+    def __init__(self, url):
+        parsed = urllib.parse.urlparse(url)
+        if parsed.scheme != "udpm":
+            raise ValueError("only udpm:// URLs are supported, not " + url)
+        options = dict(urllib.parse.parse_qsl(parsed.query))
+        self.group, self.port = parsed.hostname, parsed.port or 7667
+        self.sequence = random.getrandbits(31)
+        self.tx = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.tx.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_TTL, int(options.get("ttl", 0)))
+        self.tx.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_LOOP, 1)
+        self.rx = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.rx.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        self.rx.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF,
+                           int(options.get("recv_buf_size", 4194304)))
+        self.rx.bind(("", self.port))
+        membership = struct.pack("4s4s", socket.inet_aton(self.group), socket.inet_aton("0.0.0.0"))
+        self.rx.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP, membership)
+        self.partial = {}  # (sender, sequence) -> [channel, size, {offset: bytes}]
+
+    def close(self):
+        self.tx.close()
+        self.rx.close()
+
+    def publish(self, channel, payload):
+        self.sequence = (self.sequence + 1) & 0xFFFFFFFF
+        name = channel.encode() + b"\0"
+        if 8 + len(name) + len(payload) <= SHORT_MAX:
+            datagrams = [struct.pack(">II", SHORT_MAGIC, self.sequence) + name + payload]
+        else:
+            body = name + payload
+            count = math.ceil(len(body) / FRAGMENT_BYTES)
+            datagrams = []
+            for i in range(count):
+                piece = body[i * FRAGMENT_BYTES:(i + 1) * FRAGMENT_BYTES]
+                offset = 0 if i == 0 else i * FRAGMENT_BYTES - len(name)  # in the payload
+                datagrams.append(struct.pack(">IIIIHH", FRAGMENT_MAGIC, self.sequence,
+                                             len(payload), offset, i, count) + piece)
+        for datagram in datagrams:
+            self.tx.sendto(datagram, (self.group, self.port))
+
+    def receive(self, timeout):
+        """The next whole message (channel, payload), or None when `timeout` passes."""
+        end = time.monotonic() + timeout
+        while True:
+            left = end - time.monotonic()
+            if left <= 0:
+                return None
+            self.rx.settimeout(left)
+            try:
+                datagram, sender = self.rx.recvfrom(70000)
+            except socket.timeout:
+                return None
+            message = self._take(datagram, sender)
+            if message:
+                return message
+
+    def _take(self, datagram, sender):
+        if len(datagram) >= 8 and struct.unpack(">I", datagram[:4])[0] == SHORT_MAGIC:
+            name, _, payload = datagram[8:].partition(b"\0")
+            return name.decode(errors="replace"), payload
+        if len(datagram) < 20 or struct.unpack(">I", datagram[:4])[0] != FRAGMENT_MAGIC:
+            return None  # not LCM
+        _, sequence, size, offset, number, count = struct.unpack(">IIIIHH", datagram[:20])
+        key = (sender, sequence)
+        data = datagram[20:]
+        entry = self.partial.setdefault(key, [None, size, {}])
+        if number == 0:
+            name, _, data = data.partition(b"\0")
+            entry[0] = name.decode(errors="replace")
+        entry[2][offset] = data
+        if entry[0] is None or sum(len(d) for d in entry[2].values()) < size:
+            if len(self.partial) > 64:  # stale partial messages
+                self.partial.pop(next(iter(self.partial)))
+            return None
+        del self.partial[key]
+        payload = b"".join(entry[2][o] for o in sorted(entry[2]))
+        return entry[0], payload[:size]
+
+
+TOKEN = re.compile(r"""\s+|\#[^\n]*|(?P<id>[A-Za-z_][\w.]*)|(?P<str>(?:"(?:[^"\\\n]|\\.)*"\s*|'(?:[^'\\\n]|\\.)*'\s*)+)|(?P<open>[{<])|(?P<close>[}>])|.""")
+STRING = re.compile(r""""((?:[^"\\]|\\.)*)"|'((?:[^'\\]|\\.)*)'""")
+
+
+def named_paths(text, is_json):
+    """[(field, path)] of the spec's robot_domain, human_domain and task problems."""
+    if is_json:
+        try:
+            spec = json.loads(text)
+        except ValueError:
+            return []  # the coordinator says what is wrong
+        found = [(f, spec.get(f) or spec.get(c)) for f, c in
+                 (("robot_domain", "robotDomain"), ("human_domain", "humanDomain"))]
+        for i, task in enumerate(spec.get("task", []) if isinstance(spec, dict) else []):
+            if isinstance(task, dict):
+                found.append((f"task[{i}].problem", task.get("problem")))
+                found.append((f"task[{i}].human_problem",
+                              task.get("human_problem") or task.get("humanProblem")))
+        return [(f, p) for f, p in found if isinstance(p, str) and p]
+    found, stack, tasks, name = [], [], 0, None
+    for match in TOKEN.finditer(text):
+        if match.group("id"):
+            name = match.group("id")
+        elif match.group("open"):
+            tasks += 1 if not stack and name == "task" else 0
+            stack.append(name)
+            name = None
+        elif match.group("close"):
+            stack = stack[:-1]
+            name = None
+        elif match.group("str") and name:
+            value = "".join(a or b for a, b in STRING.findall(match.group("str")))
+            value = re.sub(r"\\(.)", r"\1", value)
+            if not stack and name in ("robot_domain", "human_domain"):
+                found.append((name, value))
+            elif stack == ["task"] and name in ("problem", "human_problem"):
+                found.append((f"task[{tasks - 1}].{name}", value))
+            name = None
+    return found
+
+
+def bundle_spec(path):
+    """The spec_t of a spec file: its text and every PDDL file it names."""
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError:
+        raise SpecError(f"{path}:0:0: error: cannot open file")
+    spec = spec_t()
+    spec.name, spec.text, spec.files = path, text, []
+    seen = set()
+    for field, relative in named_paths(text, path.endswith(".json")):
+        if relative in seen:
+            continue
+        seen.add(relative)
+        full = relative if os.path.isabs(relative) else os.path.join(os.path.dirname(path), relative)
+        try:
+            with open(full) as f:
+                content = f.read()
+        except OSError:
+            raise SpecError(f"{path}:1:1: error: cannot open '{relative}' ({field}, looked for {full})")
+        file = spec_file_t()
+        file.path, file.content = relative, content
+        spec.files.append(file)
+    spec.num_files = len(spec.files)
+    return spec
+
+
+def number(value):
+    """As the engine writes numbers: integral values as integers, infinity as "inf"."""
+    if math.isinf(value):
+        return "inf"
+    return int(value) if value == math.floor(value) and abs(value) < 1e15 else value
+
+
+def objective_json(t):
+    return {"objective": number(t.objective),
+            "terms": {"inexplicability": number(t.inexplicability),
+                      "design_cost": number(t.design_cost), "robot_cost": number(t.robot_cost)}}
+
+
+def result_json(r):
+    """SPEC.md's JSON of a design_result_t (the keys the C++ client writes)."""
+    out = {"status": r.status}
+    if r.has_design:
+        out["design"] = list(r.design)
+        out.update(objective_json(r.best))
+        out["tasks"] = [{"name": t.name, "probability": t.probability, "ie": number(t.ie),
+                         "robot_cost": number(t.robot_cost),
+                         "human_plan_cost": number(t.human_plan_cost),
+                         "human_optimal_cost": number(t.human_optimal_cost)
+                         if t.has_human_optimal_cost else None,
+                         "plan": list(t.plan)} for t in r.tasks]
+    else:
+        out.update({"design": None, "objective": None, "terms": None, "tasks": []})
+    out["baseline"] = objective_json(r.baseline) if r.has_baseline else None
+    c = r.counters
+    for key in ("configurations_evaluated", "planner_runs", "seconds", "configurations_total",
+                "configurations_abandoned", "configurations_skipped", "configurations_pruned",
+                "task_evaluations", "cache_hits", "groundings_skipped", "planner_seconds"):
+        out[key] = getattr(c, key)
+    out["cluster"] = {k: getattr(c, k) for k in ("jobs_sent", "jobs_resent", "duplicates_ignored",
+                                                 "planners_used", "transport_seconds")}
+    out["limit_reached"] = bool(r.limit_reached)
+    return out
+
+
+class RemoteError(Exception):
+    def __init__(self, exit_code, message):
+        super().__init__(message)
+        self.exit_code = exit_code
+
+
+def design(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none",
+           heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3, give_up_after_s=30):
+    """SPEC.md's result (a dict) of designing `spec_path` on the coordinator at `url`.
+    Raises SpecError (exit 2) or RemoteError (its exit_code: 1, 2 or 4)."""
+    request = design_request_t()
+    request.spec = bundle_spec(spec_path)
+    request.utime = int(time.time() * 1e6)
+    request.request_id = random.getrandbits(62) | 1
+    request.sender = f"python-client/{socket.gethostname()}/{os.getpid()}"
+    request.time_limit_s, request.max_design_size = float(time_limit_s), int(max_design_size)
+    request.prune = {"none": 0, "relevant": 1}[prune]
+    request.heuristic = {"lmcut": 0, "hmax": 1, "blind": 2}[heuristic]
+    bus = UdpmBus(url or os.environ.get("LCM_DEFAULT_URL") or DEFAULT_URL)
+    try:
+        return _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_up_after_s)
+    finally:
+        bus.close()
+
+
+def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_up_after_s):
+    start = sent = heard = time.monotonic()
+    bus.publish("ENVDESIGN_REQUEST", request.encode())
+    cancelled = False
+    while True:
+        message = bus.receive(0.05)
+        now = time.monotonic()
+        if message:
+            result = _ours(message, request, on_progress)
+            if result is not None:
+                if result.status == "error":
+                    raise RemoteError(result.exit_code, result.error)
+                if cancelled and result.exit_code == 0:
+                    result.exit_code = 4
+                return result_json(result), result.exit_code
+            if message[0] == "ENVDESIGN_PROGRESS":
+                heard = now
+        if timeout_s and now - start > timeout_s and not cancelled:
+            cancel = cancel_t()
+            cancel.utime, cancel.request_id, cancel.sender = int(time.time() * 1e6), request.request_id, request.sender
+            cancel.reason = "the client's timeout passed"
+            bus.publish("ENVDESIGN_CANCEL", cancel.encode())
+            cancelled, start = True, now
+        elif cancelled and now - start > 5:
+            raise RemoteError(4, f"timeout: no result within {timeout_s} s")
+        if now - heard > give_up_after_s:
+            raise RemoteError(1, f"no coordinator answered on udpm://{bus.group}:{bus.port}")
+        if now - sent > resend_after_s and now - heard > resend_after_s:
+            bus.publish("ENVDESIGN_REQUEST", request.encode())
+            sent = now
+
+
+def _ours(message, request, on_progress):
+    """The result if `message` is ours; calls on_progress for our progress."""
+    channel, payload = message
+    try:
+        if channel == "ENVDESIGN_RESULT":
+            r = design_result_t.decode(payload)
+            if r.request_id == request.request_id and r.client == request.sender:
+                return r
+        elif channel == "ENVDESIGN_PROGRESS":
+            p = design_progress_t.decode(payload)
+            if p.request_id == request.request_id and p.client == request.sender and on_progress:
+                on_progress(p)
+    except (ValueError, struct.error):
+        pass  # not our types: somebody else's traffic, or garbage
+    return None
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("spec")
+    parser.add_argument("--connect", default=None, help="LCM URL of the coordinator")
+    parser.add_argument("--json", action="store_true")
+    parser.add_argument("--timeout", type=float, default=0)
+    parser.add_argument("--time-limit", type=float, default=-1)
+    parser.add_argument("--max-design-size", type=int, default=-1)
+    parser.add_argument("--prune", choices=["none", "relevant"], default="none")
+    parser.add_argument("--heuristic", choices=["lmcut", "hmax", "blind"], default="lmcut")
+    args = parser.parse_args()
+
+    def progress(p):
+        if sys.stderr.isatty():
+            sys.stderr.write(f"\r\033[K{p.done}/{p.total} configurations, best {p.best_objective:g}, "
+                             f"{p.planners} planner(s)")
+
+    try:
+        result, code = design(args.spec, args.connect, args.time_limit, args.max_design_size,
+                              args.prune, args.heuristic, args.timeout, progress)
+    except SpecError as e:
+        print(e, file=sys.stderr)
+        return 2
+    except RemoteError as e:
+        print(e, file=sys.stderr)
+        return e.exit_code
+    if sys.stderr.isatty():
+        sys.stderr.write("\r\033[K")
+    if args.json:
+        print(json.dumps(result, sort_keys=True))
+    else:
+        print(f"status: {result['status']}")
+        print(f"design: {{{', '.join(result['design'] or [])}}}")
+        print(f"objective: {result['objective']} {json.dumps(result['terms'])}")
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())
