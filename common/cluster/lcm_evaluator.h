@@ -55,7 +55,8 @@ public:
     // Sends, re-sends, duplicates and planners of this evaluator's jobs.
     PoolCounters transport() const { return router_.pool().counters(owner_); }
     long long answers() const { return answers_.load(); }
-    // Summed over answers: round trip less the planner's own time (what the network adds).
+    // Summed over answers: round trip less the planner's time on the job, queue included
+    // (what the network and the coordinator add).
     double transport_seconds() const { return transport_seconds_; }
     int in_flight() const { return in_flight_.load(); }
 

@@ -240,6 +240,7 @@ void Planner::work() {
         auto start = Clock::now();
         envdesign::evaluation_t answer = evaluate(pending, caches);
         answer.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        answer.queued_seconds = std::chrono::duration<double>(start - pending.received).count();
         bus_.publish(bus::EVALUATION, answer);
         answered(answer, answer.seconds);
     }

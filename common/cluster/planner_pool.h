@@ -31,7 +31,10 @@ namespace envdesign::cluster {
 struct PoolConfig {
     double planner_timeout_s = 1.0;
     double lost_after_s = 0.3;
-    int jobs_per_slot = 1; // jobs in flight per planner worker (> 1 hides the round trip)
+    // Jobs in flight per planner worker: 2 lets a planner start its next job while the
+    // answer to the last one travels (the round trip is hidden), at the price of `abandon`
+    // seeing answers a job later.
+    int jobs_per_slot = 2;
 };
 
 struct PoolCounters {

@@ -30,7 +30,7 @@ envdesign::job_t job(std::int64_t id) {
 }
 
 TEST(PlannerPool, RoundRobinOverFreeSlotsThenQueue) {
-    PlannerPool pool({});
+    PlannerPool pool({1.0, 0.3, 1});
     auto now = Clock::now();
     pool.heartbeat(beat("a", 1), now);
     pool.heartbeat(beat("b", 1), now);
@@ -49,7 +49,7 @@ TEST(PlannerPool, RoundRobinOverFreeSlotsThenQueue) {
 }
 
 TEST(PlannerPool, FirstAnswerWinsDuplicatesAreCounted) {
-    PlannerPool pool({});
+    PlannerPool pool({1.0, 0.3, 1});
     auto now = Clock::now();
     pool.heartbeat(beat("a", 1), now);
     pool.submit(7, job(1), now);
@@ -102,7 +102,7 @@ TEST(PlannerPool, SilentPlannerIsDroppedAndItsJobsMove) {
 }
 
 TEST(PlannerPool, StoppingPlannerIsDroppedAtOnce) {
-    PlannerPool pool({});
+    PlannerPool pool({1.0, 0.3, 1});
     auto now = Clock::now();
     pool.heartbeat(beat("a", 2), now);
     pool.submit(1, job(1), now);
@@ -115,8 +115,18 @@ TEST(PlannerPool, StoppingPlannerIsDroppedAtOnce) {
     EXPECT_EQ(sent[0].planner, "b");
 }
 
+TEST(PlannerPool, SlotsPerWorkerPipelineJobs) {
+    PlannerPool pool({1.0, 0.3, 2});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    EXPECT_EQ(pool.capacity(), 2);
+    EXPECT_EQ(pool.submit(1, job(1), now).size(), 1u);
+    EXPECT_EQ(pool.submit(1, job(2), now).size(), 1u); // queued at the planner
+    EXPECT_TRUE(pool.submit(1, job(3), now).empty());
+}
+
 TEST(PlannerPool, ForgottenJobsFreeTheirSlots) {
-    PlannerPool pool({});
+    PlannerPool pool({1.0, 0.3, 1});
     auto now = Clock::now();
     pool.heartbeat(beat("a", 1), now);
     pool.submit(3, job(1), now);

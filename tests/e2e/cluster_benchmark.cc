@@ -1,6 +1,6 @@
-// cluster_benchmark [SPEC] [--repeat N]: evaluations per second and the time added per
-// evaluation by the networked services (coordinator + 1 or 2 planner processes over udpm on
-// loopback, one worker each) against the in-process evaluator with one worker, on a design
+// cluster_benchmark [SPEC] [--repeat N] [--jobs-per-slot K]: evaluations per second and the time
+// added per evaluation by the networked services (coordinator + 1 or 2 planner processes over udpm
+// on loopback, one worker each) against the in-process evaluator with one worker, on a design
 // problem with many cheap evaluations (default: tests/e2e/data/warehouse-small/signs-3).
 // Not run by ctest: `build/bin/cluster_benchmark`. Targets (issue 5): under 1 ms added per
 // evaluation; 2 planners at least 1.8 times 1.
@@ -74,13 +74,14 @@ template <typename F> Run best_of(int repeat, F run) {
     return best;
 }
 
-int benchmark(const std::string &spec, int repeat) {
-    std::printf("spec: %s, best of %d runs\n", spec.c_str(), repeat);
+int benchmark(const std::string &spec, int repeat, const std::string &jobs_per_slot) {
+    std::printf("spec: %s, best of %d runs, %s job(s) in flight per planner\n", spec.c_str(),
+                repeat, jobs_per_slot.c_str());
     Run local1 = best_of(repeat, [&] { return local_run(spec, 1); });
     Run local2 = best_of(repeat, [&] { return local_run(spec, 2); });
     Run remote[2];
     for (int planners = 1; planners <= 2; ++planners) {
-        LocalCluster cluster(planners);
+        LocalCluster cluster(planners, {"--jobs-per-slot", jobs_per_slot});
         remote_run(spec, cluster.url()); // warm-up: processes started, code paged in
         remote[planners - 1] = best_of(repeat, [&] { return remote_run(spec, cluster.url()); });
     }
@@ -112,12 +113,15 @@ int benchmark(const std::string &spec, int repeat) {
 int main(int argc, char **argv) {
     std::string spec = envdesign::e2e::source("tests/e2e/data/warehouse-small/signs-3.textproto");
     int repeat = 3;
+    std::string jobs_per_slot = "2";
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
         if (a == "--repeat" && i + 1 < argc)
             repeat = std::max(1, std::atoi(argv[++i]));
+        else if (a == "--jobs-per-slot" && i + 1 < argc)
+            jobs_per_slot = argv[++i];
         else
             spec = a;
     }
-    return envdesign::e2e::benchmark(spec, repeat);
+    return envdesign::e2e::benchmark(spec, repeat, jobs_per_slot);
 }
