@@ -120,10 +120,13 @@ void Coordinator::on_spec_need(const envdesign::spec_need_t &need) {
 }
 
 void Coordinator::tick() {
+    auto now = Clock::now();
+    if (now - last_tick_ < std::chrono::milliseconds(5))
+        return; // the loop calls after every message; housekeeping needs less
+    last_tick_ = now;
     router_.tick();
     close_finished();
     start_waiting();
-    auto now = Clock::now();
     for (auto &[name, open] : open_)
         publish_progress(open, now, false);
     auto expired = now - std::chrono::duration_cast<Clock::duration>(

@@ -8,7 +8,7 @@
 //
 //   bus::Bus bus(url, logger);
 //   Coordinator coordinator(bus, config);
-//   while (running) { bus.handle(20ms); coordinator.tick(); }
+//   while (running) { bus.handle(20ms); coordinator.tick(); }   // tick: any rate
 //
 // Handlers and tick() run on the bus thread. Messages that make no sense (bad sizes, unknown
 // enums, a request without a client name) are counted in bus.malformed() and logged.
@@ -80,6 +80,7 @@ private:
     SpecLibrary specs_;
     std::map<std::string, Open> open_;
     std::deque<std::string> waiting_;
+    Clock::time_point last_tick_{};
     std::map<std::string, Closed> closed_;
     mutable std::mutex stats_mutex_;
     CoordinatorStats stats_;

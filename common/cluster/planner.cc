@@ -65,6 +65,9 @@ Planner::~Planner() {
 
 void Planner::tick() {
     auto now = Clock::now();
+    if (now - last_tick_ < std::chrono::milliseconds(5))
+        return; // the loop calls after every message; housekeeping needs less
+    last_tick_ = now;
     if (std::chrono::duration<double>(now - last_beat_).count() >= config_.heartbeat_period_s)
         heartbeat(stopping_);
     drop_stale_parked(now);

@@ -88,6 +88,7 @@ private:
     bool closing_ = false;
     std::atomic<bool> stopping_{false};
     Clock::time_point last_beat_{};
+    Clock::time_point last_tick_{};
     std::vector<std::thread> workers_;
     std::vector<bus::Subscription> subscriptions_;
 };

@@ -123,5 +123,8 @@ int main(int argc, char **argv) {
         else
             spec = a;
     }
-    return envdesign::e2e::benchmark(spec, repeat, jobs_per_slot);
+    int code = envdesign::e2e::benchmark(spec, repeat, jobs_per_slot);
+    std::filesystem::remove_all(std::filesystem::temp_directory_path() /
+                                ("envdesign-bench-" + std::to_string(getpid())));
+    return code;
 }
