@@ -76,6 +76,7 @@ void LcmEvaluator::take(Batch &batch, const envdesign::evaluation_t &answer) {
     design::Job job = it->second.job;
     double round_trip = std::chrono::duration<double>(Clock::now() - it->second.at).count();
     transport_seconds_ += std::max(0.0, round_trip - answer.seconds - answer.queued_seconds);
+    job_seconds_ += answer.seconds;
     batch.in_flight.erase(it);
     ++answers_;
     if (job.kind == design::JobKind::EXPLICABILITY)

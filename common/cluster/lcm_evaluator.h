@@ -58,6 +58,8 @@ public:
     // Summed over answers: round trip less the planner's time on the job, queue included
     // (what the network and the coordinator add).
     double transport_seconds() const { return transport_seconds_; }
+    // Summed over answers: the planners' wall time on the jobs.
+    double job_seconds() const { return job_seconds_; }
     int in_flight() const { return in_flight_.load(); }
 
 private:
@@ -87,6 +89,7 @@ private:
     design::EvaluatorCounters counters_;
     std::optional<RemoteError> error_;
     double transport_seconds_ = 0;
+    double job_seconds_ = 0;
     std::atomic<long long> answers_{0};
     std::atomic<int> in_flight_{0};
 };

@@ -133,6 +133,7 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     transport.duplicates_ignored = pool.duplicates;
     transport.planners_used = static_cast<int>(pool.answered_by.size());
     transport.transport_seconds = evaluator.transport_seconds();
+    transport.job_seconds = evaluator.job_seconds();
     finish(result_message(problem, result, transport));
 }
 

@@ -48,6 +48,7 @@ struct TransportCounters {
     long long duplicates_ignored = 0;
     int planners_used = 0;
     double transport_seconds = 0;
+    double job_seconds = 0;
 };
 
 // design_result_t of a finished search (header fields left to the sender).

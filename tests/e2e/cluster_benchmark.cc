@@ -23,6 +23,7 @@ struct Run {
     double seconds = 0; // the search, as the result reports it
     long long evaluations = 0;
     double transport_seconds = 0; // LCM: round trips less planner time, summed
+    double job_seconds = 0;       // LCM: planner wall time on jobs, summed
     double per_second() const { return evaluations / seconds; }
 };
 
@@ -60,7 +61,8 @@ Run remote_run(const std::string &spec, const std::string &url) {
     }
     auto json = nlohmann::json::parse(r.json);
     return {json.at("seconds").get<double>(), json.at("task_evaluations").get<long long>(),
-            json.at("cluster").at("transport_seconds").get<double>()};
+            json.at("cluster").at("transport_seconds").get<double>(),
+            json.at("cluster").at("job_seconds").get<double>()};
 }
 
 // The fastest of `repeat` runs: the least disturbed by other load on the machine.
@@ -100,8 +102,10 @@ int benchmark(const std::string &spec, int repeat, const std::string &jobs_per_s
     std::printf("added per evaluation over LCM (1 planner vs 1 worker): %.3f ms (target < 1)\n",
                 added_ms);
     for (int p = 0; p < 2; ++p)
-        std::printf("round trip less planner time, %d planner(s): %.3f ms per evaluation\n", p + 1,
-                    1000 * remote[p].transport_seconds / remote[p].evaluations);
+        std::printf("%d planner(s): round trip less planner time %.3f ms per evaluation; planners "
+                    "busy %.0f%% of the wall time\n",
+                    p + 1, 1000 * remote[p].transport_seconds / remote[p].evaluations,
+                    100 * remote[p].job_seconds / ((p + 1) * remote[p].seconds));
     std::printf("2 planners / 1 planner: %.2fx (target >= 1.8); in-process 2/1 workers: %.2fx\n",
                 speedup, local2.per_second() / local1.per_second());
     return added_ms < 1 && speedup >= 1.8 ? 0 : 1;

@@ -57,7 +57,8 @@ void put_counters(json &out, const envdesign::design_counters_t &c) {
                       {"jobs_resent", c.jobs_resent},
                       {"duplicates_ignored", c.duplicates_ignored},
                       {"planners_used", c.planners_used},
-                      {"transport_seconds", c.transport_seconds}};
+                      {"transport_seconds", c.transport_seconds},
+                      {"job_seconds", c.job_seconds}};
 }
 
 std::string shown(double value) { return number(value).dump(); }
