@@ -42,7 +42,10 @@ public:
 
     // True once a bridge (any reader of the topic) is matched, false after `timeout_s`.
     bool wait_for_bridge(double timeout_s) { return writer_.wait_for_readers(1, timeout_s); }
-    // True once every matched reader has acknowledged every arrival.
+    // True once every matched reader that has discovered this writer has acknowledged every
+    // arrival. A reader that matched but is still discovering the writer is not waited for
+    // (Cyclone counts only readers that answered): keep the publisher alive a moment longer
+    // (the CLI's --linger) and that reader gets the history when it has.
     bool flush(double timeout_s) { return writer_.wait_for_acks(timeout_s); }
 
     int64_t last_sequence() const { return sequence_; }

@@ -30,7 +30,7 @@ struct Flags {
     std::string replay, task, problem_id, site = "replay";
     long long count = 1;
     int repeat = 1, domain = 0, history = dds::WRITER_HISTORY;
-    double rate = 0, wait_bridge = 0, linger = 0, ack_timeout = 5;
+    double rate = 0, wait_bridge = 0, linger = 1, ack_timeout = 5;
 };
 
 // Sleeps until `when` unless a signal comes first; false if it did.
@@ -101,7 +101,11 @@ int main(int argc, char **argv) {
     app.add_option("--history", f.history, "arrivals kept per site for late bridges")
         ->check(CLI::PositiveNumber);
     app.add_option("--wait-bridge", f.wait_bridge, "wait up to S seconds for a bridge first");
-    app.add_option("--linger", f.linger, "stay S seconds after the last arrival");
+    // A bridge that matched this writer a moment ago may still be discovering it; until it
+    // has, it does not acknowledge, and Cyclone's wait for acknowledgements does not wait for
+    // it. Staying a little serves it the history (TRANSIENT_LOCAL) once it has.
+    app.add_option("--linger", f.linger, "stay S seconds after the last arrival")
+        ->capture_default_str();
     app.add_option("--ack-timeout", f.ack_timeout, "seconds to wait for acknowledgements");
     try {
         app.parse(argc, argv);

@@ -20,7 +20,7 @@ constexpr double NOT_KNOWN = std::numeric_limits<double>::quiet_NaN();
 
 // What a spec load checks for its own tasks (spec_checks.h): the pair compiles and grounds,
 // and every modification still compiles on it.
-void check_new_task(const DesignProblem &problem, int task) {
+void check_task(const DesignProblem &problem, int task) {
     design::ModelPair models = design::base_models(problem, task);
     design::CompiledTask compiled = design::compile_explicable(models);
     ground::ground(compiled.domain, compiled.problem);
@@ -57,22 +57,28 @@ Distribution Redesigner::distribution() const {
     return d;
 }
 
-std::optional<std::string> Redesigner::add_task(const NewTask &task) {
+design::DesignTask parse_new_task(const DesignProblem &problem, const NewTask &task) {
     std::string file = "new-task:" + task.name;
     design::DesignTask t;
     t.name = task.name;
     t.probability = 0;
+    const std::string &human = task.human_problem.empty() ? task.problem : task.human_problem;
+    t.robot_problem =
+        pddl::parse_problem(pddl::read_sexpr(task.problem, file), file, problem.robot_domain);
+    // The human's problem may name the robot's domain (it often is the same file).
+    t.human_problem =
+        pddl::parse_problem(pddl::read_sexpr(human, file + " (human)"), file + " (human)",
+                            problem.human_domain, problem.robot_domain.name);
+    DesignProblem with = problem; // checked in a copy: `problem` stays as it is
+    with.tasks.push_back(t);
+    check_task(with, static_cast<int>(with.tasks.size()) - 1);
+    return t;
+}
+
+std::optional<std::string> Redesigner::add_task(const NewTask &task) {
     try {
-        const std::string &human = task.human_problem.empty() ? task.problem : task.human_problem;
-        t.robot_problem =
-            pddl::parse_problem(pddl::read_sexpr(task.problem, file), file, problem_->robot_domain);
-        t.human_problem = pddl::parse_problem(pddl::read_sexpr(human, file + " (human)"),
-                                              file + " (human)", problem_->human_domain);
-        problem_->tasks.push_back(std::move(t));
-        check_new_task(*problem_, static_cast<int>(problem_->tasks.size()) - 1);
+        problem_->tasks.push_back(parse_new_task(*problem_, task));
     } catch (const pddl::ParseError &e) {
-        if (!problem_->tasks.empty() && problem_->tasks.back().name == task.name)
-            problem_->tasks.pop_back();
         return std::string(e.what());
     }
     return std::nullopt;

@@ -61,6 +61,11 @@ struct DesignChange {
     std::string explanation; // one line: what changed and why
 };
 
+// A new task read against `problem`'s domains and checked as a spec load checks its tasks
+// (both models parse, the pair compiles and grounds, every modification compiles on it).
+// Throws pddl::ParseError, the text's position named "new-task:NAME:LINE:COL".
+design::DesignTask parse_new_task(const design::DesignProblem &problem, const NewTask &task);
+
 struct Redesign {
     design::DesignResult result; // counters are this redesign's own
     DesignChange change;

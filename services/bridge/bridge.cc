@@ -52,7 +52,8 @@ Bridge::Bridge(bus::Bus &bus, BridgeConfig config)
                                                     config_.local, answered);
     else
         backend_ = std::make_unique<CoordinatorRedesigns>(bus_, config_.instance, std::move(specs),
-                                                          config_.coordinator, answered);
+                                                          std::move(problems), config_.coordinator,
+                                                          answered);
     results_.emplace(bus_.subscribe<envdesign::design_result_t>(
         bus::RESULT, [this](const envdesign::design_result_t &r) { backend_->on_result(r); }));
     reader_ = std::make_unique<dds::ArrivalReader>(config_.domain, config_.reader_history);
@@ -185,8 +186,10 @@ void Bridge::on_answer(Answer answer) {
     p.design.request_id = last_request;
     arrivals::Distribution reference =
         answer.reference ? *answer.reference : tracker_.status(answer.problem_id)->reference;
-    bus_.log().info("request {} | {}: {}", bus::request_name(config_.instance, answer.request_id),
-                    answer.problem_id, answer.design.last_change);
+    auto level = config_.mode == Mode::LOCAL ? spdlog::level::debug : spdlog::level::info;
+    bus_.log().log(level, "request {} | {}: {}",
+                   bus::request_name(config_.instance, answer.request_id), answer.problem_id,
+                   answer.design.last_change);
     auto next = tracker_.answered(answer.problem_id, reference, now());
     publish_estimate(answer.problem_id, now(), true);
     if (next)

@@ -106,16 +106,26 @@ void LocalRedesigns::redesign(const Job &job) {
 
 CoordinatorRedesigns::CoordinatorRedesigns(bus::Bus &bus, std::string instance,
                                            std::map<std::string, envdesign::spec_t> specs,
+                                           std::map<std::string, design::DesignProblem> problems,
                                            CoordinatorRequestOptions options, Answered answered)
     : bus_(bus), instance_(std::move(instance)), options_(options), answered_(std::move(answered)),
-      specs_(std::move(specs)) {}
+      specs_(std::move(specs)), problems_(std::move(problems)) {}
 
 void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Request &request) {
     envdesign::design_request_t m{};
+    std::vector<arrivals::NewTask> good;
+    for (const auto &task : request.new_tasks) {
+        try {
+            arrivals::parse_new_task(problems_.at(request.problem_id), task);
+            good.push_back(task);
+        } catch (const pddl::ParseError &e) { // the answer will lack it: refused
+            bus_.log().warn("request {} | {}: new task refused: {}",
+                            bus::request_name(instance_, request_id), request.problem_id, e.what());
+        }
+    }
     {
         std::lock_guard lock(mutex_);
-        m.spec =
-            with_distribution(specs_.at(request.problem_id), request.estimate, request.new_tasks);
+        m.spec = with_distribution(specs_.at(request.problem_id), request.estimate, good);
         pending_[request_id] = {request.problem_id, m.spec};
     }
     m.utime = bus::now_utime();
@@ -148,7 +158,9 @@ void CoordinatorRedesigns::on_result(const envdesign::design_result_t &result) {
         } else {
             specs_[id] = pending.spec; // the new tasks are the problem's now
             answer.reference = references_[id] = distribution_of(result);
-            std::string what = before == result.design
+            bool first = answered_once_.insert(id).second;
+            std::string what = first ? "design " + names(result.design)
+                               : before == result.design
                                    ? "design " + names(result.design) + " unchanged"
                                    : "design " + names(before) + " -> " + names(result.design);
             answer.design = {result.design, result.best.objective,

@@ -22,6 +22,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <thread>
 
 namespace envdesign::bridge {
@@ -81,9 +82,12 @@ struct CoordinatorRequestOptions {
 
 class CoordinatorRedesigns : public RedesignBackend {
 public:
-    // `specs`: each problem's spec file with its files inlined (spec_request.h).
+    // `specs`: each problem's spec file with its files inlined (spec_request.h); `problems`:
+    // the same loaded, to check new tasks before they go out (one bad task would make the
+    // coordinator refuse the whole request).
     CoordinatorRedesigns(bus::Bus &bus, std::string instance,
                          std::map<std::string, envdesign::spec_t> specs,
+                         std::map<std::string, design::DesignProblem> problems,
                          CoordinatorRequestOptions options, Answered answered);
 
     void start(std::int64_t request_id, const arrivals::Request &request) override;
@@ -101,9 +105,11 @@ private:
     Answered answered_;
     std::mutex mutex_; // start() on the DDS thread, on_result() on the bus thread
     std::map<std::string, envdesign::spec_t> specs_;           // with new tasks taken in
+    std::map<std::string, design::DesignProblem> problems_;    // for checking new tasks
     std::map<std::string, std::vector<std::string>> designs_;  // the last design per problem
     std::map<std::string, arrivals::Distribution> references_; // its D
     std::map<std::int64_t, Pending> pending_;
+    std::set<std::string> answered_once_; // problems with a design
 };
 
 } // namespace envdesign::bridge

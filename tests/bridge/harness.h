@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -66,9 +67,9 @@ inline std::unique_ptr<Process> start_bridge(const std::string &dir, int domain,
                                      "--lcm-url",
                                      lcm_url(port),
                                      "--name",
-                                     "bridge/test",
-                                     "--publish-hz",
-                                     "50"};
+                                     "bridge/test"};
+    if (std::find(extra.begin(), extra.end(), "--publish-hz") == extra.end())
+        argv.insert(argv.end(), {"--publish-hz", "50"});
     argv.insert(argv.end(), extra.begin(), extra.end());
     return std::make_unique<Process>(argv, dds_env(), dir + "/bridge.log");
 }
