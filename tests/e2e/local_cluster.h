@@ -158,6 +158,8 @@ public:
         args.insert(args.end(), flags.begin(), flags.end());
         planners_.push_back(std::make_unique<Process>(args, (dir_ / (name + ".log")).string()));
         EXPECT_TRUE(watcher_.wait_for(name)) << name << " never beat";
+        // Heard here is not yet heard by the coordinator, which may still be starting.
+        EXPECT_TRUE(coordinator_knows(name)) << name << " never joined\n" << logs();
         return *planners_.back();
     }
 
@@ -172,6 +174,18 @@ public:
     }
 
 private:
+    // True once the coordinator logged that `name` joined.
+    bool coordinator_knows(const std::string &name, double timeout_s = 10) {
+        auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+        std::string joined = "planner " + name + " joined";
+        while (std::chrono::steady_clock::now() < end) {
+            if (coordinator_->log().find(joined) != std::string::npos)
+                return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        return false;
+    }
+
     std::string url_;
     std::filesystem::path dir_;
     HeartbeatWatcher watcher_{url_};
