@@ -34,7 +34,7 @@ Service open_service(const std::string &role, const CommonFlags &flags) {
     return s;
 }
 
-int run_until_signal(Service &service, const std::function<void()> &tick, int period_ms) {
+int run_until_signal(Service &service, const std::function<int()> &tick) {
     struct sigaction action {};
     action.sa_handler = on_signal;
     sigemptyset(&action.sa_mask);
@@ -42,17 +42,25 @@ int run_until_signal(Service &service, const std::function<void()> &tick, int pe
     sigaction(SIGTERM, &action, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
     int failures = 0; // in a row; a signal interrupting the wait fails one too
+    int wait_ms = 0;
     while (g_signal == 0) {
-        bool failed = service.bus->handle(std::chrono::milliseconds(period_ms)) < 0;
+        bool failed = service.bus->handle(std::chrono::milliseconds(wait_ms)) < 0;
         failures = failed && g_signal == 0 ? failures + 1 : 0;
         if (failures >= 100) {
             service.log->error("request - | LCM keeps failing; stopping");
             return 1;
         }
-        tick();
+        wait_ms = tick();
     }
     service.log->info("request - | signal {}: stopping", g_signal.load());
     return 0;
+}
+
+int run_until_signal(Service &service, const std::function<void()> &tick, int period_ms) {
+    return run_until_signal(service, std::function<int()>([&] {
+                                tick();
+                                return period_ms;
+                            }));
 }
 
 } // namespace envdesign::services

@@ -31,5 +31,8 @@ Service open_service(const std::string &role, const CommonFlags &flags);
 // Runs `tick` after every bus.handle() (at least every `period_ms`) until SIGINT or SIGTERM.
 // Returns 0, or 1 if LCM failed.
 int run_until_signal(Service &service, const std::function<void()> &tick, int period_ms = 20);
+// The same with a tick that says how long (ms) the loop may wait for a message before it
+// ticks again: a service with work under way asks to be ticked sooner.
+int run_until_signal(Service &service, const std::function<int()> &tick);
 
 } // namespace envdesign::services

@@ -7,6 +7,7 @@
 #include "design/relevance.h"
 #include "design/result_json.h"
 
+#include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
 
 #include <cstdio>
@@ -57,6 +58,25 @@ design::DesignSearchOptions search_options(const DesignFlags &flags,
     return options;
 }
 
+// A client of the coordinator at `flags.connect`: the same search, run by the cluster.
+int run_design_remote(const DesignFlags &flags) {
+    client::Options options;
+    options.time_limit_s = flags.time_limit_s;
+    options.max_design_size = flags.max_design_size;
+    options.prune = flags.prune;
+    options.heuristic = flags.heuristic;
+    options.on_progress = client::stderr_progress();
+    client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
+    if (result.status == "error") {
+        std::cerr << result.error << std::endl;
+        return result.exit_code;
+    }
+    std::cout << (flags.json ? result.json + "\n" : result.text) << std::flush;
+    if (result.exit_code == 4)
+        spdlog::warn("the time limit stopped the search; the design is the best found");
+    return result.exit_code;
+}
+
 } // namespace
 
 void add_design_flags(CLI::App &command, DesignFlags &flags) {
@@ -78,12 +98,8 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
 }
 
 int run_design(const DesignFlags &flags) {
-    if (!flags.connect.empty()) {
-        std::cerr << "envdesign design: --connect is not available yet (issue 5); run without it "
-                     "to search in this process"
-                  << std::endl;
-        return 2;
-    }
+    if (!flags.connect.empty())
+        return run_design_remote(flags);
     design::DesignProblem problem;
     try {
         problem = design::load_design_problem(flags.spec);

@@ -15,7 +15,7 @@ struct DesignFlags {
     int max_design_size = -1; // < 0: the spec's max_design_size
     std::string prune = "none";
     std::string heuristic = "lmcut";
-    std::string connect; // LCM URL of a running coordinator (issue 5)
+    std::string connect; // LCM URL of a running coordinator; --workers does not apply then
 };
 
 void add_design_flags(CLI::App &command, DesignFlags &flags);

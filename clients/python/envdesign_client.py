@@ -230,7 +230,8 @@ def result_json(r):
                 "task_evaluations", "cache_hits", "groundings_skipped", "planner_seconds"):
         out[key] = getattr(c, key)
     out["cluster"] = {k: getattr(c, k) for k in ("jobs_sent", "jobs_resent", "duplicates_ignored",
-                                                 "planners_used", "transport_seconds", "job_seconds")}
+                                                 "planners_used", "transport_seconds", "job_seconds",
+                                                 "stored_answers")}
     out["limit_reached"] = bool(r.limit_reached)
     return out
 

@@ -36,7 +36,7 @@ bool progress_changed(const design_progress_t &a, const design_progress_t &b) {
 
 Coordinator::Coordinator(bus::Bus &bus, CoordinatorConfig config)
     : bus_(bus), config_(std::move(config)), router_(bus, config_.pool, config_.instance),
-      specs_(config_.instance) {
+      specs_(config_.instance), stores_(config_.stored_evaluations) {
     subscriptions_.push_back(bus_.subscribe<design_request_t>(
         bus::REQUEST, [this](const design_request_t &r) { on_request(r); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::cancel_t>(
@@ -87,7 +87,7 @@ void Coordinator::on_request(const design_request_t &request) {
     }
     bus_.log().info("request {} | accepted: spec {} with {} file(s)", name, request.spec.name,
                     request.spec.files.size());
-    RunContext context{bus_, router_, specs_, config_.work_dir, config_.grace_s};
+    RunContext context{bus_, router_, specs_, config_.work_dir, config_.grace_s, &stores_};
     open_[name].run = std::make_unique<RequestRun>(context, request);
     waiting_.push_back(name);
     {
@@ -119,19 +119,22 @@ void Coordinator::on_spec_need(const envdesign::spec_need_t &need) {
         bus_.publish(bus::SPEC, chunk);
 }
 
-void Coordinator::tick() {
-    auto now = Clock::now();
-    if (now - last_tick_ < std::chrono::milliseconds(5))
-        return; // the loop calls after every message; housekeeping needs less
-    last_tick_ = now;
-    router_.tick();
+int Coordinator::tick() {
+    // Results and starts at once: they are the latency a client sees.
     close_finished();
     start_waiting();
+    int wait_ms = open_.empty() ? 20 : 1;
+    auto now = Clock::now();
+    if (now - last_tick_ < std::chrono::milliseconds(5))
+        return wait_ms; // the loop calls after every message; housekeeping needs less
+    last_tick_ = now;
+    router_.tick();
     for (auto &[name, open] : open_)
         publish_progress(open, now, false);
     auto expired = now - std::chrono::duration_cast<Clock::duration>(
                              std::chrono::duration<double>(config_.keep_results_s));
     std::erase_if(closed_, [&](const auto &entry) { return entry.second.at < expired; });
+    return wait_ms;
 }
 
 CoordinatorStats Coordinator::stats() const {

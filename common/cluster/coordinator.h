@@ -8,7 +8,8 @@
 //
 //   bus::Bus bus(url, logger);
 //   Coordinator coordinator(bus, config);
-//   while (running) { bus.handle(20ms); coordinator.tick(); }   // tick: any rate
+//   int wait = 0;
+//   while (running) { bus.handle(wait ms); wait = coordinator.tick(); }
 //
 // Handlers and tick() run on the bus thread. Messages that make no sense (bad sizes, unknown
 // enums, a request without a client name) are counted in bus.malformed() and logged.
@@ -35,6 +36,8 @@ struct CoordinatorConfig {
     double progress_interval_s = 0.1; // progress at most this often per request
     double keepalive_s = 0.5;         // and at least this often while it is open
     double keep_results_s = 600;      // results kept for repeats of a request
+    // Task evaluations kept across requests (evaluation_stores.h); 0: none kept.
+    std::size_t stored_evaluations = 1'000'000;
 };
 
 struct CoordinatorStats {
@@ -49,7 +52,9 @@ public:
     Coordinator(bus::Bus &bus, CoordinatorConfig config);
     ~Coordinator(); // cancels and joins the open requests
 
-    void tick();
+    // Returns how long (ms) the caller may wait for messages before the next tick: short
+    // while requests are open, so that a finished search is published at once.
+    int tick();
     CoordinatorStats stats() const;
     const JobRouter &router() const { return router_; }
 
@@ -78,6 +83,7 @@ private:
     CoordinatorConfig config_;
     JobRouter router_;
     SpecLibrary specs_;
+    EvaluationStores stores_;
     std::map<std::string, Open> open_;
     std::deque<std::string> waiting_;
     Clock::time_point last_tick_{};

@@ -3,12 +3,15 @@
 #include "bus/channels.h"
 #include "bus/codec.h"
 #include "bus/log.h"
+#include "arrivals/stored_evaluator.h"
 #include "cluster/lcm_evaluator.h"
 #include "cluster/spec_chunks.h"
 #include "cluster/spec_loader.h"
 #include "cluster/wire.h"
 #include "design/relevance.h"
 #include "pddl/parse_error.h"
+
+#include <optional>
 
 namespace envdesign::cluster {
 namespace {
@@ -114,9 +117,17 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
         progress_.planner_runs = p.planner_runs;
         progress_.cache_hits = p.cache_hits;
     };
+    // Evaluations do not depend on D or the weights: those an earlier request with the same
+    // models and modifications made are re-weighted, not re-planned.
+    std::shared_ptr<arrivals::EvaluationStore> store =
+        context_.stores ? context_.stores->store_for(problem) : nullptr;
+    std::optional<arrivals::StoredEvaluator> stored;
+    if (store)
+        stored.emplace(problem, evaluator, *store);
+    design::Evaluator &searched = stored ? static_cast<design::Evaluator &>(*stored) : evaluator;
     design::DesignResult result;
     try {
-        result = design::search_design(problem, evaluator, options, on_progress);
+        result = design::search_design(problem, searched, options, on_progress);
     } catch (...) {
         std::lock_guard lock(mutex_);
         evaluator_ = nullptr;
@@ -134,6 +145,9 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     transport.planners_used = static_cast<int>(pool.answered_by.size());
     transport.transport_seconds = evaluator.transport_seconds();
     transport.job_seconds = evaluator.job_seconds();
+    transport.stored_answers = stored ? stored->stored_answers() : 0;
+    if (context_.stores)
+        context_.stores->trim();
     finish(result_message(problem, result, transport));
 }
 

@@ -5,6 +5,7 @@
 // thread reads progress() and result() and publishes them.
 
 #include "bus/bus.h"
+#include "cluster/evaluation_stores.h"
 #include "cluster/job_router.h"
 #include "cluster/spec_library.h"
 #include "design/design_problem.h"
@@ -29,6 +30,7 @@ struct RunContext {
     SpecLibrary &specs;
     std::string work_dir;
     double grace_s = 1.0; // after the deadline, planners' LIMIT answers are awaited this long
+    EvaluationStores *stores = nullptr; // evaluations kept across requests; null: none
 };
 
 class RequestRun {

@@ -57,6 +57,7 @@ envdesign::design_counters_t counters_message(const design::DesignCounters &c,
     m.planners_used = static_cast<std::int16_t>(transport.planners_used);
     m.transport_seconds = transport.transport_seconds;
     m.job_seconds = transport.job_seconds;
+    m.stored_answers = transport.stored_answers;
     return m;
 }
 

@@ -49,6 +49,7 @@ struct TransportCounters {
     int planners_used = 0;
     double transport_seconds = 0;
     double job_seconds = 0;
+    long long stored_answers = 0;
 };
 
 // design_result_t of a finished search (header fields left to the sender).

@@ -28,6 +28,10 @@ int main(int argc, char **argv) {
                    "jobs in flight per planner worker")
         ->check(CLI::Range(1, 64))
         ->capture_default_str();
+    app.add_option("--stored-evaluations", config.stored_evaluations,
+                   "task evaluations kept across requests (re-weighted when only the task "
+                   "distribution or weights change; 0: none)")
+        ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     try {
@@ -39,7 +43,8 @@ int main(int argc, char **argv) {
         services::Service service = services::open_service("coordinator", common);
         config.instance = service.instance;
         cluster::Coordinator coordinator(*service.bus, config);
-        return services::run_until_signal(service, [&] { coordinator.tick(); });
+        return services::run_until_signal(service,
+                                          std::function<int()>([&] { return coordinator.tick(); }));
     } catch (const std::exception &e) {
         std::cerr << "envdesign-coordinator: " << e.what() << std::endl;
         return 1;

@@ -8,6 +8,8 @@
 #include "envdesign/cancel_t.hpp"
 #include "envdesign/planner_heartbeat_t.hpp"
 
+#include <fstream>
+
 namespace envdesign::cluster::testing {
 namespace {
 
@@ -145,6 +147,54 @@ TEST(Cluster, RepeatedRequestIsAnsweredFromRecord) {
     for (int i = 0; i < 200 && cluster.coordinator().stats().repeats < 1; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     EXPECT_GE(cluster.coordinator().stats().repeats, 1);
+}
+
+// A copy of the restaurant (T=10) with task probabilities `p1`, 1 - `p1`, and a comment
+// line that makes its bytes (and so its content hash) its own.
+std::string restaurant_with(double p1, const std::string &name) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / ("envdesign-store-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    for (const auto &entry : fs::directory_iterator(in_repo("examples/restaurant")))
+        fs::copy(entry.path(), dir / entry.path().filename(), fs::copy_options::overwrite_existing);
+    std::ifstream in(dir / "c-two-tasks-t10.textproto");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto set = [&](const std::string &task, double p) {
+        std::string from = "name: \"" + task + "\"";
+        std::size_t at = text.find("probability: 0.5", text.find(from));
+        text.replace(at, 16, "probability: " + std::to_string(p));
+    };
+    set("serve-g1", p1);
+    set("serve-g2", 1 - p1);
+    fs::path spec = dir / (name + ".textproto");
+    std::ofstream(spec) << "# " << name << "\n" << text;
+    return spec.string();
+}
+
+// Evaluations do not depend on D: a request that differs only in its probabilities is
+// answered from what the planners answered before, and equals a fresh local run.
+TEST(Cluster, NewDistributionIsAReweightingOfStoredEvaluations) {
+    MemqCluster cluster(1);
+    std::string even = restaurant_with(0.5, "even");
+    std::string skewed = restaurant_with(0.9, "skewed");
+    std::string even_again = restaurant_with(0.5, "even-again");
+
+    auto first = cluster.request(request_of(even, 1));
+    EXPECT_GT(first.counters.jobs_sent, 0);
+    EXPECT_EQ(first.counters.stored_answers, 0);
+
+    auto second = cluster.request(request_of(skewed, 2));
+    expect_same_design(json_of(second), local_result(skewed));
+    EXPECT_GT(second.counters.stored_answers, 0);
+    EXPECT_LT(second.counters.jobs_sent, first.counters.jobs_sent);
+
+    // Everything the even distribution needs was stored by the first request.
+    auto third = cluster.request(request_of(even_again, 3));
+    expect_same_design(json_of(third), json_of(first));
+    EXPECT_EQ(third.counters.jobs_sent, 0);
+    EXPECT_EQ(third.counters.planner_runs, 0);
+    EXPECT_GT(third.counters.stored_answers, 0);
+    std::filesystem::remove_all(std::filesystem::path(even).parent_path());
 }
 
 TEST(Cluster, SeveralRequestsAtOnce) {

@@ -64,11 +64,13 @@ TEST(BadSpec, AMissingSpecFileExitsTwo) {
         << result.out;
 }
 
-TEST(BadSpec, ConnectIsNotAvailableYet) {
+// --connect with a URL LCM cannot open: a clear error naming it, not a 30 s wait.
+TEST(BadSpec, ConnectToAnUnusableUrlNamesIt) {
     CommandResult result = run_envdesign("design " + std::string(ENVDESIGN_EXAMPLES) +
-                                         "/restaurant/a-one-task-t1.textproto --connect udpm://");
-    EXPECT_EQ(result.exit_code, 2);
-    EXPECT_NE(result.out.find("issue 5"), std::string::npos) << result.out;
+                                         "/restaurant/a-one-task-t1.textproto --connect bogus://x");
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.out.find("LCM cannot start on 'bogus://x'"), std::string::npos)
+        << result.out;
 }
 
 } // namespace

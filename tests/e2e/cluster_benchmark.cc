@@ -65,27 +65,28 @@ Run remote_run(const std::string &spec, const std::string &url) {
             json.at("cluster").at("job_seconds").get<double>()};
 }
 
-// The fastest of `repeat` runs: the least disturbed by other load on the machine.
-template <typename F> Run best_of(int repeat, F run) {
-    Run best{1e18, 0};
-    for (int i = 0; i < repeat; ++i) {
-        Run r = run();
-        if (r.seconds < best.seconds)
-            best = r;
-    }
-    return best;
+// The run of median time among `repeat` runs.
+template <typename F> Run median_of(int repeat, F run) {
+    std::vector<Run> runs;
+    for (int i = 0; i < repeat; ++i)
+        runs.push_back(run());
+    std::sort(runs.begin(), runs.end(),
+              [](const Run &a, const Run &b) { return a.seconds < b.seconds; });
+    return runs[runs.size() / 2];
 }
 
 int benchmark(const std::string &spec, int repeat, const std::string &jobs_per_slot) {
-    std::printf("spec: %s, best of %d runs, %s job(s) in flight per planner\n", spec.c_str(),
+    std::printf("spec: %s, median of %d runs, %s job(s) in flight per planner\n", spec.c_str(),
                 repeat, jobs_per_slot.c_str());
-    Run local1 = best_of(repeat, [&] { return local_run(spec, 1); });
-    Run local2 = best_of(repeat, [&] { return local_run(spec, 2); });
+    Run local1 = median_of(repeat, [&] { return local_run(spec, 1); });
+    Run local2 = median_of(repeat, [&] { return local_run(spec, 2); });
     Run remote[2];
     for (int planners = 1; planners <= 2; ++planners) {
-        LocalCluster cluster(planners, {"--jobs-per-slot", jobs_per_slot});
+        // No evaluations kept across requests: every run is the planners' work again.
+        LocalCluster cluster(planners,
+                             {"--jobs-per-slot", jobs_per_slot, "--stored-evaluations", "0"});
         remote_run(spec, cluster.url()); // warm-up: processes started, code paged in
-        remote[planners - 1] = best_of(repeat, [&] { return remote_run(spec, cluster.url()); });
+        remote[planners - 1] = median_of(repeat, [&] { return remote_run(spec, cluster.url()); });
     }
     auto row = [](const char *name, const Run &r) {
         std::printf("%-32s %8lld evaluations %8.3f s %9.1f evaluations/s %8.3f ms/evaluation\n",
@@ -116,7 +117,7 @@ int benchmark(const std::string &spec, int repeat, const std::string &jobs_per_s
 
 int main(int argc, char **argv) {
     std::string spec = envdesign::e2e::source("tests/e2e/data/warehouse-small/signs-3.textproto");
-    int repeat = 3;
+    int repeat = 5;
     std::string jobs_per_slot = "2";
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];

@@ -194,6 +194,25 @@ TEST(EndToEnd, SpecFarLargerThanADatagram) {
     fs::remove_all(copy);
 }
 
+// `envdesign design --connect URL`: the CLI as a client of the cluster.
+TEST(EndToEnd, CliConnectGivesTheSelfContainedResult) {
+    LocalCluster cluster(2);
+    std::string connect = " --connect '" + cluster.url() + "'";
+    int exit_code = -1;
+    std::string json = command_output(
+        binary("envdesign") + " design " + source(RESTAURANT) + " --json" + connect + " 2>/dev/null",
+        &exit_code);
+    ASSERT_EQ(exit_code, 0) << json << cluster.logs();
+    expect_same_design(nlohmann::json::parse(json), self_contained(source(RESTAURANT)));
+
+    std::string error = command_output(binary("envdesign") + " design " +
+                                           source("tests/data/design/bad/missing-file.textproto") +
+                                           connect + " 2>&1",
+                                       &exit_code);
+    EXPECT_EQ(exit_code, 2);
+    EXPECT_NE(error.find("missing-file.textproto:4:"), std::string::npos) << error;
+}
+
 TEST(EndToEnd, NoCoordinatorIsExit1) {
     client::Options options;
     options.give_up_after_s = 1;

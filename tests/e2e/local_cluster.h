@@ -193,17 +193,23 @@ private:
     std::vector<std::unique_ptr<Process>> planners_;
 };
 
-// `envdesign design SPEC --json`: the self-contained run.
-inline nlohmann::json self_contained(const std::string &spec) {
-    std::string command = binary("envdesign") + " design " + spec + " --json 2>/dev/null";
+// What a shell command prints on stdout; `exit_code` gets its exit code.
+inline std::string command_output(const std::string &command, int *exit_code = nullptr) {
     FILE *out = popen(command.c_str(), "r");
     std::string text;
     char buffer[4096];
     while (out && fgets(buffer, sizeof buffer, out))
         text += buffer;
-    if (out)
-        pclose(out);
-    return nlohmann::json::parse(text);
+    int status = out ? pclose(out) : -1;
+    if (exit_code)
+        *exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return text;
+}
+
+// `envdesign design SPEC --json`: the self-contained run.
+inline nlohmann::json self_contained(const std::string &spec) {
+    return nlohmann::json::parse(
+        command_output(binary("envdesign") + " design " + spec + " --json 2>/dev/null"));
 }
 
 // The fields of SPEC.md's result that do not depend on how the work was spread.

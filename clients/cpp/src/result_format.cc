@@ -58,7 +58,8 @@ void put_counters(json &out, const envdesign::design_counters_t &c) {
                       {"duplicates_ignored", c.duplicates_ignored},
                       {"planners_used", c.planners_used},
                       {"transport_seconds", c.transport_seconds},
-                      {"job_seconds", c.job_seconds}};
+                      {"job_seconds", c.job_seconds},
+                      {"stored_answers", c.stored_answers}};
 }
 
 std::string shown(double value) { return number(value).dump(); }

@@ -1,0 +1,38 @@
+#include "cluster/evaluation_stores.h"
+
+namespace envdesign::cluster {
+
+std::shared_ptr<arrivals::EvaluationStore>
+EvaluationStores::store_for(const design::DesignProblem &problem) {
+    Key key = arrivals::store_key(problem);
+    std::lock_guard lock(mutex_);
+    auto it = stores_.find(key);
+    if (it != stores_.end()) {
+        recent_.splice(recent_.begin(), recent_, it->second.second);
+        return it->second.first;
+    }
+    recent_.push_front(key);
+    auto store = std::make_shared<arrivals::EvaluationStore>();
+    stores_.emplace(key, std::make_pair(store, recent_.begin()));
+    return store;
+}
+
+void EvaluationStores::trim() {
+    std::lock_guard lock(mutex_);
+    std::size_t total = 0;
+    for (const auto &[key, entry] : stores_)
+        total += entry.first->size();
+    while (total > max_entries_ && !recent_.empty()) {
+        auto it = stores_.find(recent_.back());
+        total -= it->second.first->size();
+        stores_.erase(it);
+        recent_.pop_back();
+    }
+}
+
+std::size_t EvaluationStores::stores() const {
+    std::lock_guard lock(mutex_);
+    return stores_.size();
+}
+
+} // namespace envdesign::cluster

@@ -1,0 +1,39 @@
+#pragma once
+// The coordinator's task evaluations, kept across requests (arrivals/evaluation_store.h):
+// one EvaluationStore per store key, so that a request that differs from an earlier one only
+// in its task distribution, its weights or added tasks (what envdesign-bridge sends when the
+// distribution drifts) is a re-weighting of what the planners answered before, not a
+// re-planning. A long-running coordinator must not grow without bound: past max_entries
+// evaluations in all, the stores used least recently are dropped whole. Thread-safe.
+
+#include "arrivals/evaluation_store.h"
+
+#include <cstddef>
+#include <list>
+#include <map>
+#include <memory>
+#include <mutex>
+
+namespace envdesign::cluster {
+
+class EvaluationStores {
+public:
+    explicit EvaluationStores(std::size_t max_entries) : max_entries_(max_entries) {}
+
+    // The store of `problem`'s store key, made if new; it stays valid for the caller while
+    // held even if dropped here.
+    std::shared_ptr<arrivals::EvaluationStore> store_for(const design::DesignProblem &problem);
+    // Drops stores (least recently used first) until the rest hold at most max_entries.
+    void trim();
+    std::size_t stores() const;
+
+private:
+    using Key = arrivals::TaskKey;
+    std::size_t max_entries_;
+    mutable std::mutex mutex_;
+    std::list<Key> recent_; // most recently used first
+    std::map<Key, std::pair<std::shared_ptr<arrivals::EvaluationStore>, std::list<Key>::iterator>>
+        stores_;
+};
+
+} // namespace envdesign::cluster
