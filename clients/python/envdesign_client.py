@@ -233,6 +233,8 @@ def result_json(r):
                                                  "planners_used", "transport_seconds", "job_seconds",
                                                  "stored_answers")}
     out["limit_reached"] = bool(r.limit_reached)
+    if r.change:  # a re-evaluation: what changed and why
+        out["change"] = r.change
     return out
 
 

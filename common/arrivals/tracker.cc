@@ -1,5 +1,7 @@
 #include "arrivals/tracker.h"
 
+#include <cstdio>
+
 namespace envdesign::arrivals {
 
 const char *to_string(Reason reason) {
@@ -12,6 +14,21 @@ const char *to_string(Reason reason) {
         return "drift";
     }
     return "?";
+}
+
+std::string describe(const Request &request) {
+    char numbers[64];
+    std::snprintf(numbers, sizeof numbers, " (TV %.3f, %.0f samples)", request.distance,
+                  request.samples);
+    std::string text = std::string(to_string(request.reason)) + ": D " +
+                       to_string(request.estimate) + " vs the design's " +
+                       to_string(request.reference) + numbers;
+    if (!request.new_tasks.empty()) {
+        text += ", new task(s):";
+        for (const auto &task : request.new_tasks)
+            text += " " + task.name;
+    }
+    return text;
 }
 
 ArrivalTracker::ArrivalTracker(TrackerConfig config) : config_(config), intake_(config.intake) {}

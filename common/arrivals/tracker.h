@@ -61,6 +61,9 @@ struct Request {
     double samples = 0;             // effective samples behind the estimate
     std::vector<NewTask> new_tasks; // tasks to add to the problem first
 };
+// Why `request` was made, one line: "drift: D {...} vs the design's {...} (TV 0.310, 100
+// samples)", and the new tasks if any.
+std::string describe(const Request &request);
 
 enum class Use { REJECTED, ESTIMATED, NEW_TASK, UNKNOWN_TASK };
 

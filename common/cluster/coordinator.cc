@@ -2,6 +2,7 @@
 
 #include "bus/channels.h"
 #include "bus/log.h"
+#include "cluster/design_change.h"
 #include "cluster/spec_chunks.h"
 #include "cluster/wire.h"
 
@@ -165,10 +166,28 @@ void Coordinator::close_finished() {
         }
         publish_progress(it->second, Clock::now(), true); // the final count, state DONE
         envdesign::design_result_t result = it->second.run->result();
+        note_change(it->second.run->request(), result);
         closed_[it->first] = {result, Clock::now()};
         it = open_.erase(it); // joins the finished thread
         publish_result(std::move(result));
     }
+}
+
+// A request with a reason (a re-evaluation) gets what changed since its client's last
+// result for the same spec, and why.
+void Coordinator::note_change(const design_request_t &request,
+                              envdesign::design_result_t &result) {
+    if (request.reason.empty() || result.status == "error")
+        return;
+    std::string key = request.sender + '\n' + request.spec.name;
+    auto before = last_designs_.find(key);
+    result.change =
+        design_change(before == last_designs_.end() ? nullptr : &before->second, result) + ": " +
+        request.reason;
+    if (result.has_design)
+        last_designs_[key] = result.design;
+    bus_.log().info("request {} | {}", bus::request_name(request.sender, request.request_id),
+                    result.change);
 }
 
 void Coordinator::publish_progress(Open &open, Clock::time_point now, bool force) {

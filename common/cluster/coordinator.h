@@ -76,6 +76,8 @@ private:
     void on_spec_need(const envdesign::spec_need_t &need);
     void start_waiting();
     void close_finished();
+    void note_change(const envdesign::design_request_t &request,
+                     envdesign::design_result_t &result);
     void publish_progress(Open &open, Clock::time_point now, bool force);
     void publish_result(envdesign::design_result_t result);
 
@@ -88,6 +90,8 @@ private:
     std::deque<std::string> waiting_;
     Clock::time_point last_tick_{};
     std::map<std::string, Closed> closed_;
+    // The last design per (client, spec name) of requests with a reason: their `change`.
+    std::map<std::string, std::vector<std::string>> last_designs_;
     mutable std::mutex stats_mutex_;
     CoordinatorStats stats_;
     std::vector<bus::Subscription> subscriptions_; // last: handlers stop before the rest goes

@@ -148,13 +148,8 @@ void Bridge::send(const arrivals::Request &request) {
     m.request_id = id;
     m.sender = config_.instance;
     bus_.publish(REEVALUATE, m);
-    bus_.log().info(
-        "request {} | {}: re-evaluate ({}): D {} vs the design's {} (TV {:.3f}, {:.0f} "
-        "samples){}",
-        bus::request_name(config_.instance, id), request.problem_id,
-        arrivals::to_string(request.reason), arrivals::to_string(request.estimate),
-        arrivals::to_string(request.reference), request.distance, request.samples,
-        request.new_tasks.empty() ? "" : fmt::format(", {} new task(s)", request.new_tasks.size()));
+    bus_.log().info("request {} | {}: re-evaluate, {}", bus::request_name(config_.instance, id),
+                    request.problem_id, arrivals::describe(request));
     backend_->start(id, request);
     publish_estimate(request.problem_id, now(), true);
 }

@@ -4,6 +4,7 @@
 
 #include "bus/channels.h"
 #include "bus/log.h"
+#include "cluster/design_change.h"
 #include "cluster/wire.h"
 #include "envdesign/design_request_t.hpp"
 #include "pddl/parse_error.h"
@@ -15,13 +16,6 @@ namespace envdesign::bridge {
 namespace {
 
 constexpr double NOT_KNOWN = std::numeric_limits<double>::quiet_NaN();
-
-std::string names(const std::vector<std::string> &list) {
-    std::string out = "{";
-    for (const auto &n : list)
-        out += (out.size() > 1 ? ", " : "") + n;
-    return out + "}";
-}
 
 } // namespace
 
@@ -78,6 +72,7 @@ void LocalRedesigns::redesign(const Job &job) {
     try {
         arrivals::Redesign out = r.redesign(job.request.estimate, job.request.new_tasks);
         message = cluster::result_message(r.problem(), out.result, {});
+        message.change = out.change.explanation + "; " + arrivals::describe(job.request);
         answer.design = {out.change.after_names, out.change.objective_after, out.change.explanation,
                          job.request_id};
         answer.reference = r.distribution();
@@ -135,6 +130,7 @@ void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Reques
     m.max_design_size = -1;
     m.prune = envdesign::design_request_t::PRUNE_NONE;
     m.heuristic = options_.heuristic;
+    m.reason = arrivals::describe(request);
     bus_.publish(bus::REQUEST, m);
 }
 
@@ -159,14 +155,13 @@ void CoordinatorRedesigns::on_result(const envdesign::design_result_t &result) {
             specs_[id] = pending.spec; // the new tasks are the problem's now
             answer.reference = references_[id] = distribution_of(result);
             bool first = answered_once_.insert(id).second;
-            std::string what = first ? "design " + names(result.design)
-                               : before == result.design
-                                   ? "design " + names(result.design) + " unchanged"
-                                   : "design " + names(before) + " -> " + names(result.design);
+            std::string what = cluster::design_change(first ? nullptr : &before, result);
             answer.design = {result.design, result.best.objective,
                              what + " for D " + arrivals::to_string(references_[id]) + " (" +
                                  std::to_string(result.counters.planner_runs) +
-                                 " planner runs on the coordinator)",
+                                 " planner runs and " +
+                                 std::to_string(result.counters.stored_answers) +
+                                 " configurations from stored evaluations on the coordinator)",
                              result.request_id};
             before = result.design;
         }

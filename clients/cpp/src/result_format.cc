@@ -88,6 +88,8 @@ std::string result_json(const envdesign::design_result_t &r) {
     out["baseline"] = r.has_baseline ? objective_json(r.baseline) : json();
     put_counters(out, r.counters);
     out["limit_reached"] = r.limit_reached != 0;
+    if (!r.change.empty()) // a re-evaluation: what changed and why
+        out["change"] = r.change;
     return out.dump();
 }
 
