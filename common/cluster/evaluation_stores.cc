@@ -3,8 +3,9 @@
 namespace envdesign::cluster {
 
 std::shared_ptr<arrivals::EvaluationStore>
-EvaluationStores::store_for(const design::DesignProblem &problem) {
-    Key key = arrivals::store_key(problem);
+EvaluationStores::store_for(const design::DesignProblem &problem, int heuristic) {
+    Key key = design::key_of_text(arrivals::store_key(problem).hex() + " heuristic " +
+                                  std::to_string(heuristic));
     std::lock_guard lock(mutex_);
     auto it = stores_.find(key);
     if (it != stores_.end()) {

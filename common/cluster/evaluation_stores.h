@@ -20,9 +20,11 @@ class EvaluationStores {
 public:
     explicit EvaluationStores(std::size_t max_entries) : max_entries_(max_entries) {}
 
-    // The store of `problem`'s store key, made if new; it stays valid for the caller while
-    // held even if dropped here.
-    std::shared_ptr<arrivals::EvaluationStore> store_for(const design::DesignProblem &problem);
+    // The store of `problem`'s store key searched with `heuristic` (it picks among plans of
+    // equal cost, so its plans are its own), made if new; it stays valid for the caller
+    // while held even if dropped here.
+    std::shared_ptr<arrivals::EvaluationStore> store_for(const design::DesignProblem &problem,
+                                                         int heuristic);
     // Drops stores (least recently used first) until the rest hold at most max_entries.
     void trim();
     std::size_t stores() const;

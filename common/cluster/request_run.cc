@@ -120,7 +120,7 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     // Evaluations do not depend on D or the weights: those an earlier request with the same
     // models and modifications made are re-weighted, not re-planned.
     std::shared_ptr<arrivals::EvaluationStore> store =
-        context_.stores ? context_.stores->store_for(problem) : nullptr;
+        context_.stores ? context_.stores->store_for(problem, request_.heuristic) : nullptr;
     std::optional<arrivals::StoredEvaluator> stored;
     if (store)
         stored.emplace(problem, evaluator, *store);

@@ -1,0 +1,62 @@
+// The coordinator's stores of evaluations across requests: one per (models, modifications,
+// distance, heuristic), the least recently used dropped first when there are too many.
+
+#include "harness.h"
+
+#include "cluster/evaluation_stores.h"
+
+namespace envdesign::cluster::testing {
+namespace {
+
+design::TaskExplicability solved(double ie) {
+    design::TaskExplicability e;
+    e.status = design::ExplicabilityStatus::SOLVED;
+    e.ie = ie;
+    e.robot_cost = 7;
+    return e;
+}
+
+class EvaluationStoresTest : public ::testing::Test {
+protected:
+    design::DesignProblem restaurant =
+        design::load_design_problem(in_repo("examples/restaurant/c-two-tasks-t10.textproto"));
+    design::DesignProblem blocks =
+        design::load_design_problem(in_repo("examples/blocksworld/design.textproto"));
+};
+
+TEST_F(EvaluationStoresTest, SameModelsShareAStoreWhateverTheDistribution) {
+    EvaluationStores stores(100);
+    design::DesignProblem skewed = restaurant;
+    skewed.tasks[0].probability = 0.9;
+    skewed.tasks[1].probability = 0.1;
+    skewed.weights.horizon = 3;
+    EXPECT_EQ(stores.store_for(restaurant, 0), stores.store_for(skewed, 0));
+    EXPECT_NE(stores.store_for(restaurant, 0), stores.store_for(restaurant, 1)); // heuristic
+    EXPECT_NE(stores.store_for(restaurant, 0), stores.store_for(blocks, 0));
+    design::DesignProblem fewer = restaurant;
+    fewer.modifications.pop_back(); // configuration indices would mean other things
+    EXPECT_NE(stores.store_for(restaurant, 0), stores.store_for(fewer, 0));
+    EXPECT_EQ(stores.stores(), 4u);
+}
+
+TEST_F(EvaluationStoresTest, TrimDropsTheLeastRecentlyUsed) {
+    EvaluationStores stores(3);
+    auto key = arrivals::task_key(restaurant, 0);
+    auto first = stores.store_for(restaurant, 0);
+    first->keep({0}, key, solved(1));
+    first->keep({1}, key, solved(2));
+    auto second = stores.store_for(blocks, 0);
+    second->keep({0}, arrivals::task_key(blocks, 0), solved(3));
+    stores.trim();
+    EXPECT_EQ(stores.stores(), 2u); // 3 entries: nothing to drop
+    stores.store_for(restaurant, 0); // the restaurant is now the most recent
+    second->keep({1}, arrivals::task_key(blocks, 0), solved(4));
+    stores.trim(); // 4 entries: the blocks store goes
+    EXPECT_EQ(stores.stores(), 1u);
+    EXPECT_EQ(stores.store_for(restaurant, 0), first);
+    EXPECT_EQ(stores.store_for(restaurant, 0)->find({1}, key)->ie, 2);
+    EXPECT_EQ(stores.store_for(blocks, 0)->size(), 0u); // made anew
+}
+
+} // namespace
+} // namespace envdesign::cluster::testing
