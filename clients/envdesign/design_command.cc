@@ -10,6 +10,7 @@
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <unistd.h>
@@ -58,14 +59,23 @@ design::DesignSearchOptions search_options(const DesignFlags &flags,
     return options;
 }
 
+volatile std::sig_atomic_t interrupted = 0;
+void on_interrupt(int) { interrupted = 1; }
+
 // A client of the coordinator at `flags.connect`: the same search, run by the cluster.
+// Ctrl-C (or SIGTERM) cancels the request; the coordinator's best design so far is printed.
 int run_design_remote(const DesignFlags &flags) {
+    if (flags.workers != 1)
+        spdlog::warn("--workers does not apply with --connect: the cluster's planners work");
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
     client::Options options;
     options.time_limit_s = flags.time_limit_s;
     options.max_design_size = flags.max_design_size;
     options.prune = flags.prune;
     options.heuristic = flags.heuristic;
     options.on_progress = client::stderr_progress();
+    options.stop_requested = [] { return interrupted != 0; };
     client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
     if (result.status == "error") {
         std::cerr << result.error << std::endl;

@@ -70,4 +70,9 @@ std::size_t EvaluationStore::size() const {
     return entries_.size();
 }
 
+std::size_t EvaluationStore::records() const {
+    std::lock_guard lock(mutex_);
+    return entries_.size() + robot_bounds_.size();
+}
+
 } // namespace envdesign::arrivals

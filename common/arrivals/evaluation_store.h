@@ -13,7 +13,8 @@
 // Robot-cost bounds (design/dispatcher.h) are kept the same way, so that a configuration
 // the bounds abandoned once can be abandoned again without a planner.
 // One EvaluationStore holds the entries of one store key; its owner keeps one per key (a
-// Redesigner has one; a coordinator could keep a map of them). Thread-safe.
+// Redesigner has one; the coordinator a map of them, cluster/evaluation_stores.h).
+// Thread-safe.
 
 #include "design/configuration.h"
 #include "design/explicability.h"
@@ -46,7 +47,8 @@ public:
                           double bound);
     // Forgets every evaluation and bound of one task.
     void forget(const TaskKey &task);
-    std::size_t size() const;
+    std::size_t size() const;    // evaluations
+    std::size_t records() const; // evaluations and bounds
 
 private:
     mutable std::mutex mutex_;

@@ -52,16 +52,24 @@ void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation) {
 void StoredEvaluator::evaluate(const std::vector<design::Configuration> &batch,
                                const design::Deadline &deadline,
                                const design::EvaluationCallbacks &callbacks) {
-    std::vector<design::Configuration> missing;
+    // Complete ones first: they may lower the best objective the partial ones are judged by.
+    std::vector<ConfigurationEvaluation> partial;
     for (const auto &configuration : batch) {
         ConfigurationEvaluation known = from_store(configuration);
         if (known.status != design::EvaluationStatus::COMPLETE) {
-            if (!callbacks.abandon || !callbacks.abandon(known)) {
-                missing.push_back(configuration);
-                continue;
-            }
-            known.status = design::EvaluationStatus::CUT_OFF;
+            partial.push_back(std::move(known));
+            continue;
         }
+        ++stored_answers_;
+        callbacks.done(std::move(known));
+    }
+    std::vector<design::Configuration> missing;
+    for (auto &known : partial) {
+        if (!callbacks.abandon || !callbacks.abandon(known)) {
+            missing.push_back(known.configuration);
+            continue;
+        }
+        known.status = design::EvaluationStatus::CUT_OFF;
         ++stored_answers_;
         callbacks.done(std::move(known));
     }

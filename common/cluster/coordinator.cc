@@ -6,6 +6,7 @@
 #include "cluster/spec_chunks.h"
 #include "cluster/wire.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace envdesign::cluster {
@@ -88,7 +89,8 @@ void Coordinator::on_request(const design_request_t &request) {
     }
     bus_.log().info("request {} | accepted: spec {} with {} file(s)", name, request.spec.name,
                     request.spec.files.size());
-    RunContext context{bus_, router_, specs_, config_.work_dir, config_.grace_s, &stores_};
+    RunContext context{bus_, router_, specs_, config_.work_dir, config_.grace_s,
+                       config_.stored_evaluations > 0 ? &stores_ : nullptr};
     open_[name].run = std::make_unique<RequestRun>(context, request);
     waiting_.push_back(name);
     {
@@ -124,7 +126,9 @@ int Coordinator::tick() {
     // Results and starts at once: they are the latency a client sees.
     close_finished();
     start_waiting();
-    int wait_ms = open_.empty() ? 20 : 1;
+    bool searching = std::any_of(open_.begin(), open_.end(),
+                                 [](const auto &open) { return open.second.started; });
+    int wait_ms = searching ? 1 : 20;
     auto now = Clock::now();
     if (now - last_tick_ < std::chrono::milliseconds(5))
         return wait_ms; // the loop calls after every message; housekeeping needs less

@@ -36,8 +36,9 @@ struct CoordinatorConfig {
     double progress_interval_s = 0.1; // progress at most this often per request
     double keepalive_s = 0.5;         // and at least this often while it is open
     double keep_results_s = 600;      // results kept for repeats of a request
-    // Task evaluations kept across requests (evaluation_stores.h); 0: none kept.
-    std::size_t stored_evaluations = 1'000'000;
+    // Task evaluations and bounds kept across requests (evaluation_stores.h), each a plan
+    // of a few hundred bytes; 0: none kept.
+    std::size_t stored_evaluations = 200'000;
 };
 
 struct CoordinatorStats {

@@ -1,5 +1,7 @@
 #include "cluster/evaluation_stores.h"
 
+#include <algorithm>
+
 namespace envdesign::cluster {
 
 std::shared_ptr<arrivals::EvaluationStore>
@@ -22,12 +24,15 @@ void EvaluationStores::trim() {
     std::lock_guard lock(mutex_);
     std::size_t total = 0;
     for (const auto &[key, entry] : stores_)
-        total += entry.first->size();
-    while (total > max_entries_ && !recent_.empty()) {
-        auto it = stores_.find(recent_.back());
-        total -= it->second.first->size();
+        total += entry.first->records();
+    for (auto key = recent_.end(); total > max_records_ && key != recent_.begin();) {
+        --key;
+        auto it = stores_.find(*key);
+        if (it->second.first.use_count() > 1)
+            continue; // a search is filling it
+        total -= std::min(total, it->second.first->records());
         stores_.erase(it);
-        recent_.pop_back();
+        key = recent_.erase(key);
     }
 }
 

@@ -3,8 +3,10 @@
 // one EvaluationStore per store key, so that a request that differs from an earlier one only
 // in its task distribution, its weights or added tasks (what envdesign-bridge sends when the
 // distribution drifts) is a re-weighting of what the planners answered before, not a
-// re-planning. A long-running coordinator must not grow without bound: past max_entries
-// evaluations in all, the stores used least recently are dropped whole. Thread-safe.
+// re-planning. A long-running coordinator must not grow without bound: past max_records
+// evaluations and bounds in all, the stores used least recently are dropped whole, except
+// those a running search holds (it would keep filling a store nobody finds again).
+// Thread-safe.
 
 #include "arrivals/evaluation_store.h"
 
@@ -18,20 +20,21 @@ namespace envdesign::cluster {
 
 class EvaluationStores {
 public:
-    explicit EvaluationStores(std::size_t max_entries) : max_entries_(max_entries) {}
+    explicit EvaluationStores(std::size_t max_records) : max_records_(max_records) {}
 
     // The store of `problem`'s store key searched with `heuristic` (it picks among plans of
     // equal cost, so its plans are its own), made if new; it stays valid for the caller
     // while held even if dropped here.
     std::shared_ptr<arrivals::EvaluationStore> store_for(const design::DesignProblem &problem,
                                                          int heuristic);
-    // Drops stores (least recently used first) until the rest hold at most max_entries.
+    // Drops stores nobody holds (least recently used first) until the rest hold at most
+    // max_records.
     void trim();
     std::size_t stores() const;
 
 private:
     using Key = arrivals::TaskKey;
-    std::size_t max_entries_;
+    std::size_t max_records_;
     mutable std::mutex mutex_;
     std::list<Key> recent_; // most recently used first
     std::map<Key, std::pair<std::shared_ptr<arrivals::EvaluationStore>, std::list<Key>::iterator>>

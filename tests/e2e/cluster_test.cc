@@ -213,6 +213,36 @@ TEST(EndToEnd, CliConnectGivesTheSelfContainedResult) {
     EXPECT_NE(error.find("missing-file.textproto:4:"), std::string::npos) << error;
 }
 
+// Ctrl-C on `envdesign design --connect`: the request is cancelled on the coordinator (it
+// does not keep a slot searching for nobody) and the best design so far is printed, exit 4.
+TEST(EndToEnd, CliInterruptedCancelsTheRequest) {
+    LocalCluster cluster(1);
+    std::string spec = source("tests/e2e/data/warehouse-small/signs-3.textproto");
+    std::string out = (std::filesystem::temp_directory_path() /
+                       ("envdesign-cli-" + std::to_string(getpid()) + ".out"))
+                          .string();
+    Process cli({binary("envdesign"), "design", spec, "--json", "--connect", cluster.url()}, out);
+    auto searching = [&] { return cluster.coordinator().log().find("loaded:") != std::string::npos; };
+    for (int i = 0; i < 500 && !searching(); ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    ASSERT_TRUE(searching()) << cluster.logs();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    cli.signal(SIGINT);
+    EXPECT_EQ(cli.wait(), 4) << cli.log();
+    std::istringstream printed(cli.log()); // stdout and stderr: the JSON is one line of it
+    std::string line;
+    while (std::getline(printed, line) && (line.empty() || line[0] != '{'))
+        ;
+    ASSERT_FALSE(line.empty()) << cli.log();
+    auto json = nlohmann::json::parse(line);
+    EXPECT_EQ(json.at("status"), "best_found");
+    EXPECT_EQ(json.at("limit_reached"), true);
+    EXPECT_NE(cluster.coordinator().log().find("cancelled by the client: the client was stopped"),
+              std::string::npos)
+        << cluster.logs();
+    std::filesystem::remove(out);
+}
+
 TEST(EndToEnd, NoCoordinatorIsExit1) {
     client::Options options;
     options.give_up_after_s = 1;

@@ -89,7 +89,9 @@ public:
             if (result_)
                 break;
             if (options_.timeout_s > 0 && since(start) >= options_.timeout_s)
-                return cancel();
+                return cancel("the client's timeout passed");
+            if (options_.stop_requested && options_.stop_requested())
+                return cancel("the client was stopped");
             if (since(heard_) >= options_.give_up_after_s)
                 return failure(1, "no coordinator answered on " + bus_.url());
             if (since(sent_) >= options_.resend_after_s && since(heard_) >= options_.resend_after_s)
@@ -118,20 +120,19 @@ private:
         bus_.publish(bus::REQUEST, request_);
         sent_ = Clock::now();
     }
-    // Our timeout passed: ask the coordinator to stop and take what it has.
-    Result cancel() {
+    // Our timeout passed or we were stopped: ask the coordinator to stop and take what it has.
+    Result cancel(const std::string &why) {
         envdesign::cancel_t cancel{};
         cancel.utime = bus::now_utime();
         cancel.request_id = request_.request_id;
         cancel.sender = request_.sender;
-        cancel.reason = "the client's timeout passed";
+        cancel.reason = why;
         bus_.publish(bus::CANCEL, cancel);
         auto asked = Clock::now();
         while (!result_ && since(asked) < 5)
             bus_.handle(std::chrono::milliseconds(50));
         if (!result_)
-            return failure(4, "timeout: no result within " + std::to_string(options_.timeout_s) +
-                                  " s");
+            return failure(4, why + " and the coordinator sent no result");
         Result r = finish(*result_);
         r.exit_code = r.exit_code == 0 ? 4 : r.exit_code;
         return r;

@@ -49,6 +49,9 @@ struct Options {
     double give_up_after_s = 30;     // silence after which no coordinator is assumed
     // Called on the calling thread for each progress message.
     std::function<void(const Progress &)> on_progress;
+    // Polled on the calling thread (every 50 ms); true: cancel the request as a timeout
+    // does (the coordinator stops and sends what it has; exit code 4). E.g. after SIGINT.
+    std::function<bool()> stop_requested;
 };
 
 struct Result {
