@@ -3,7 +3,7 @@
 // replay files, and starting the bridge, the publisher, the coordinator and planners.
 
 #include "listener.h"
-#include "process.h"
+#include "../support/process.h"
 
 #include <gtest/gtest.h>
 

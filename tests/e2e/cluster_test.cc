@@ -58,7 +58,7 @@ TEST(EndToEnd, PlannerKilledMidRun) {
     ASSERT_TRUE(killed);
     expect_self_contained(result, WAREHOUSE);
     EXPECT_EQ(cluster.planner(0).wait(), 128 + SIGKILL);
-    EXPECT_NE(cluster.coordinator().log().find("planner-0 went silent"), std::string::npos)
+    EXPECT_NE(cluster.coordinator().output().find("planner-0 went silent"), std::string::npos)
         << cluster.logs();
     EXPECT_GE(nlohmann::json::parse(result.json).at("cluster").at("jobs_resent"), 1);
 }
@@ -77,7 +77,7 @@ TEST(EndToEnd, PlannerStartedMidRunTakesWork) {
     expect_self_contained(result, WAREHOUSE);
     EXPECT_EQ(nlohmann::json::parse(result.json).at("cluster").at("planners_used"), 2)
         << cluster.logs();
-    EXPECT_NE(cluster.planner(1).log().find("spec"), std::string::npos); // it asked for it
+    EXPECT_NE(cluster.planner(1).output().find("spec"), std::string::npos); // it asked for it
 }
 
 // Publishes junk on every ENVDESIGN_ channel until stopped: random bytes, messages of the
@@ -162,9 +162,9 @@ TEST(EndToEnd, GarbageOnEveryChannelChangesNothing) {
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
     EXPECT_TRUE(cluster.planner(1).running()) << cluster.logs();
-    EXPECT_NE(cluster.coordinator().log().find("malformed message on ENVDESIGN_REQUEST"),
+    EXPECT_NE(cluster.coordinator().output().find("malformed message on ENVDESIGN_REQUEST"),
               std::string::npos);
-    EXPECT_NE(cluster.planner(0).log().find("malformed message on ENVDESIGN_JOB"),
+    EXPECT_NE(cluster.planner(0).output().find("malformed message on ENVDESIGN_JOB"),
               std::string::npos);
     // And the services stop cleanly afterwards.
     cluster.planner(1).signal(SIGTERM);
@@ -190,7 +190,7 @@ TEST(EndToEnd, SpecFarLargerThanADatagram) {
     client::Result result = client::run_design_remote(spec, cluster.url());
     ASSERT_EQ(result.exit_code, 0) << result.error << cluster.logs();
     expect_same_design(nlohmann::json::parse(result.json), self_contained(spec));
-    EXPECT_NE(cluster.planner(0).log().find("received"), std::string::npos);
+    EXPECT_NE(cluster.planner(0).output().find("received"), std::string::npos);
     fs::remove_all(copy);
 }
 
@@ -222,22 +222,22 @@ TEST(EndToEnd, CliInterruptedCancelsTheRequest) {
                        ("envdesign-cli-" + std::to_string(getpid()) + ".out"))
                           .string();
     Process cli({binary("envdesign"), "design", spec, "--json", "--connect", cluster.url()}, out);
-    auto searching = [&] { return cluster.coordinator().log().find("loaded:") != std::string::npos; };
+    auto searching = [&] { return cluster.coordinator().output().find("loaded:") != std::string::npos; };
     for (int i = 0; i < 500 && !searching(); ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     ASSERT_TRUE(searching()) << cluster.logs();
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     cli.signal(SIGINT);
-    EXPECT_EQ(cli.wait(), 4) << cli.log();
-    std::istringstream printed(cli.log()); // stdout and stderr: the JSON is one line of it
+    EXPECT_EQ(cli.wait(), 4) << cli.output();
+    std::istringstream printed(cli.output()); // stdout and stderr: the JSON is one line of it
     std::string line;
     while (std::getline(printed, line) && (line.empty() || line[0] != '{'))
         ;
-    ASSERT_FALSE(line.empty()) << cli.log();
+    ASSERT_FALSE(line.empty()) << cli.output();
     auto json = nlohmann::json::parse(line);
     EXPECT_EQ(json.at("status"), "best_found");
     EXPECT_EQ(json.at("limit_reached"), true);
-    EXPECT_NE(cluster.coordinator().log().find("cancelled by the client: the client was stopped"),
+    EXPECT_NE(cluster.coordinator().output().find("cancelled by the client: the client was stopped"),
               std::string::npos)
         << cluster.logs();
     std::filesystem::remove(out);

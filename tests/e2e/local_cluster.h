@@ -7,22 +7,17 @@
 #include "bus/channels.h"
 #include "envdesign/planner_heartbeat_t.hpp"
 
+#include "../support/process.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <spdlog/sinks/null_sink.h>
 
-#include <csignal>
-#include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <spawn.h>
 #include <sstream>
-#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
-
-extern char **environ;
 
 namespace envdesign::e2e {
 
@@ -39,65 +34,7 @@ inline std::string unique_url() {
            "?ttl=0&recv_buf_size=4194304";
 }
 
-// A child process with stdout and stderr in `log`; SIGTERM (then SIGKILL) when destroyed.
-class Process {
-public:
-    Process(const std::vector<std::string> &args, const std::string &log) : log_(log) {
-        posix_spawn_file_actions_t files;
-        posix_spawn_file_actions_init(&files);
-        posix_spawn_file_actions_addopen(&files, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                         0644);
-        posix_spawn_file_actions_adddup2(&files, 1, 2);
-        std::vector<char *> argv;
-        for (const auto &a : args)
-            argv.push_back(const_cast<char *>(a.c_str()));
-        argv.push_back(nullptr);
-        int rc = posix_spawn(&pid_, argv[0], &files, nullptr, argv.data(), environ);
-        posix_spawn_file_actions_destroy(&files);
-        EXPECT_EQ(rc, 0) << "cannot start " << args[0];
-    }
-    ~Process() {
-        if (!running())
-            return;
-        signal(SIGTERM);
-        for (int i = 0; i < 100 && running(); ++i)
-            std::this_thread::sleep_for(std::chrono::milliseconds(30));
-        if (running())
-            signal(SIGKILL);
-        wait();
-    }
-    void signal(int s) const { ::kill(pid_, s); }
-    bool running() {
-        if (exited_)
-            return false;
-        int status = 0;
-        if (waitpid(pid_, &status, WNOHANG) == pid_) {
-            exited_ = true;
-            status_ = status;
-        }
-        return !exited_;
-    }
-    // The exit code (128 + signal if killed).
-    int wait() {
-        if (!exited_) {
-            waitpid(pid_, &status_, 0);
-            exited_ = true;
-        }
-        return WIFEXITED(status_) ? WEXITSTATUS(status_) : 128 + WTERMSIG(status_);
-    }
-    std::string log() const {
-        std::ifstream in(log_);
-        std::stringstream s;
-        s << in.rdbuf();
-        return s.str();
-    }
-
-private:
-    std::string log_;
-    pid_t pid_ = -1;
-    bool exited_ = false;
-    int status_ = 0;
-};
+using testing::Process;
 
 // Hears heartbeats, to know which planners the coordinator can see.
 class HeartbeatWatcher {
@@ -167,9 +104,9 @@ public:
     Process &coordinator() { return *coordinator_; }
     Process &planner(int i) { return *planners_.at(i); }
     std::string logs() {
-        std::string all = "--- coordinator\n" + coordinator_->log();
+        std::string all = "--- coordinator\n" + coordinator_->output();
         for (std::size_t i = 0; i < planners_.size(); ++i)
-            all += "--- planner-" + std::to_string(i) + "\n" + planners_[i]->log();
+            all += "--- planner-" + std::to_string(i) + "\n" + planners_[i]->output();
         return all;
     }
 
@@ -179,7 +116,7 @@ private:
         auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
         std::string joined = "planner " + name + " joined";
         while (std::chrono::steady_clock::now() < end) {
-            if (coordinator_->log().find(joined) != std::string::npos)
+            if (coordinator_->output().find(joined) != std::string::npos)
                 return true;
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }

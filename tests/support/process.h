@@ -1,6 +1,7 @@
 #pragma once
-// A child process for the real-process tests: started with posix_spawn, its output in a log
-// file, stopped with SIGTERM (then SIGKILL) when the test is done with it.
+// A child process for the real-process tests (tests/e2e, tests/bridge): started with
+// posix_spawn, its output in a log file, stopped with SIGTERM (then SIGKILL) when the test
+// is done with it.
 
 #include <chrono>
 #include <csignal>
@@ -53,6 +54,8 @@ public:
         if (rc != 0)
             throw std::runtime_error("cannot start " + argv[0]);
     }
+    Process(std::vector<std::string> argv, std::string log)
+        : Process(std::move(argv), {}, std::move(log)) {}
     ~Process() { stop(); }
     Process(const Process &) = delete;
     Process &operator=(const Process &) = delete;
@@ -72,7 +75,14 @@ public:
         }
         return status_;
     }
+    // The exit code (128 + signal if killed), once it exits.
+    int wait() {
+        while (!wait(std::chrono::hours(1)))
+            ;
+        return *status_;
+    }
     bool running() { return !wait(std::chrono::milliseconds(0)); }
+    void signal(int s) const { ::kill(pid_, s); }
 
     // SIGTERM, then SIGKILL after 5 s; the exit code.
     int stop() {
