@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <iostream>
 
 namespace envdesign::services {
 namespace {
@@ -32,6 +33,30 @@ Service open_service(const std::string &role, const CommonFlags &flags) {
     s.bus = std::make_unique<bus::Bus>(url, s.log);
     s.log->info("request - | on {}", url);
     return s;
+}
+
+std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
+                                      const std::function<void()> &check) {
+    try {
+        app.parse(argc, argv);
+        if (check)
+            check();
+    } catch (const CLI::ParseError &e) {
+        int code = app.exit(e);
+        return e.get_exit_code() == 0 ? code : 2;
+    }
+    return std::nullopt;
+}
+
+int serve(const std::string &role, const CommonFlags &flags,
+          const std::function<int(Service &)> &run) {
+    try {
+        Service service = open_service(role, flags);
+        return run(service);
+    } catch (const std::exception &e) {
+        std::cerr << "envdesign-" << role << ": " << e.what() << std::endl;
+        return 1;
+    }
 }
 
 int run_until_signal(Service &service, const std::function<int()> &tick) {

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace envdesign::services {
@@ -27,6 +28,16 @@ struct Service {
     std::unique_ptr<bus::Bus> bus;
 };
 Service open_service(const std::string &role, const CommonFlags &flags);
+
+// Parses the command line, then runs `check` (which may throw CLI::ParseError too). Returns
+// nothing to go on, or the exit code: 0 after --help, 2 for bad flags (CLI11's message).
+std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
+                                      const std::function<void()> &check = {});
+
+// Opens the service as `role` and returns what `run` returns; an exception out of either is
+// reported as "envdesign-ROLE: ..." with exit code 1.
+int serve(const std::string &role, const CommonFlags &flags,
+          const std::function<int(Service &)> &run);
 
 // Runs `tick` after every bus.handle() (at least every `period_ms`) until SIGINT or SIGTERM.
 // Returns 0, or 1 if LCM failed.

@@ -98,22 +98,17 @@ int main(int argc, char **argv) {
     Flags flags;
     bridge::BridgeConfig config;
     add_flags(app, flags, config);
-    try {
-        app.parse(argc, argv);
-        finish_config(flags, config);
-    } catch (const CLI::ParseError &e) {
-        return e.get_exit_code() == 0 ? app.exit(e) : (app.exit(e), 2);
-    }
-    try {
-        services::Service service = services::open_service("bridge", common);
+    if (auto code = services::parse_command_line(app, argc, argv,
+                                                 [&] { finish_config(flags, config); }))
+        return *code;
+    return services::serve("bridge", common, [&](services::Service &service) {
         config.instance = service.instance;
-        bridge::Bridge bridge(*service.bus, config);
-        return services::run_until_signal(service, [&] { bridge.tick(); });
-    } catch (const pddl::ParseError &e) {
-        std::cerr << e.what() << std::endl;
-        return 2;
-    } catch (const std::exception &e) {
-        std::cerr << "envdesign-bridge: " << e.what() << std::endl;
-        return 1;
-    }
+        try {
+            bridge::Bridge bridge(*service.bus, config);
+            return services::run_until_signal(service, [&] { bridge.tick(); });
+        } catch (const pddl::ParseError &e) { // a --problem spec that does not load
+            std::cerr << e.what() << std::endl;
+            return 2;
+        }
+    });
 }

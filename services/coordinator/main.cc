@@ -4,8 +4,6 @@
 #include "cluster/spec_loader.h"
 #include "service_main.h"
 
-#include <iostream>
-
 int main(int argc, char **argv) {
     using namespace envdesign;
     CLI::App app{"envdesign-coordinator: design requests in, progress and results out"};
@@ -34,19 +32,12 @@ int main(int argc, char **argv) {
         ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        return e.get_exit_code() == 0 ? app.exit(e) : (app.exit(e), 2);
-    }
-    try {
-        services::Service service = services::open_service("coordinator", common);
+    if (auto code = services::parse_command_line(app, argc, argv))
+        return *code;
+    return services::serve("coordinator", common, [&](services::Service &service) {
         config.instance = service.instance;
         cluster::Coordinator coordinator(*service.bus, config);
-        return services::run_until_signal(service,
-                                          std::function<int()>([&] { return coordinator.tick(); }));
-    } catch (const std::exception &e) {
-        std::cerr << "envdesign-coordinator: " << e.what() << std::endl;
-        return 1;
-    }
+        return services::run_until_signal(
+            service, std::function<int()>([&] { return coordinator.tick(); }));
+    });
 }

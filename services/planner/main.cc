@@ -4,8 +4,6 @@
 #include "cluster/spec_loader.h"
 #include "service_main.h"
 
-#include <iostream>
-
 int main(int argc, char **argv) {
     using namespace envdesign;
     CLI::App app{"envdesign-planner: jobs in, evaluations out"};
@@ -24,20 +22,13 @@ int main(int argc, char **argv) {
         ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError &e) {
-        return e.get_exit_code() == 0 ? app.exit(e) : (app.exit(e), 2);
-    }
-    try {
-        services::Service service = services::open_service("planner", common);
+    if (auto code = services::parse_command_line(app, argc, argv))
+        return *code;
+    return services::serve("planner", common, [&](services::Service &service) {
         config.instance = service.instance;
         cluster::Planner planner(*service.bus, config);
         int code = services::run_until_signal(service, [&] { planner.tick(); });
         planner.stop(); // coordinators move its jobs at once; running ones still finish
         return code;
-    } catch (const std::exception &e) {
-        std::cerr << "envdesign-planner: " << e.what() << std::endl;
-        return 1;
-    }
+    });
 }
