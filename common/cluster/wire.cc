@@ -22,11 +22,9 @@ envdesign::design_terms_t terms_message(const design::Objective &objective) {
     return t;
 }
 
-envdesign::task_result_t task_message(const design::DesignTask &task,
-                                      const design::TaskExplicability &t) {
-    envdesign::task_result_t m;
-    m.name = task.name;
-    m.probability = task.probability;
+// The fields task_result_t and evaluation_t share.
+template <typename Message>
+void put_costs_and_plan(const design::TaskExplicability &t, Message &m) {
     m.ie = t.ie;
     m.robot_cost = t.robot_cost;
     m.human_plan_cost = t.human_plan_cost;
@@ -34,6 +32,14 @@ envdesign::task_result_t task_message(const design::DesignTask &task,
     m.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
     m.plan = t.plan;
     m.plan_length = static_cast<std::int16_t>(m.plan.size());
+}
+
+envdesign::task_result_t task_message(const design::DesignTask &task,
+                                      const design::TaskExplicability &t) {
+    envdesign::task_result_t m;
+    m.name = task.name;
+    m.probability = task.probability;
+    put_costs_and_plan(t, m);
     return m;
 }
 
@@ -143,13 +149,7 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     default:
         e.status = evaluation_t::STATUS_LIMIT;
     }
-    e.ie = t.ie;
-    e.robot_cost = t.robot_cost;
-    e.human_plan_cost = t.human_plan_cost;
-    e.has_human_optimal_cost = t.human_optimal_cost.has_value();
-    e.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
-    e.plan = t.plan;
-    e.plan_length = static_cast<std::int16_t>(e.plan.size());
+    put_costs_and_plan(t, e);
 }
 
 void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
