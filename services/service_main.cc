@@ -50,6 +50,10 @@ std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
 
 int serve(const std::string &role, const CommonFlags &flags,
           const std::function<int(Service &)> &run) {
+    if (auto problem = bus::url_problem(flags.lcm_url.empty() ? bus::default_url() : flags.lcm_url)) {
+        std::cerr << "envdesign-" << role << ": --lcm-url: " << *problem << std::endl;
+        return 2;
+    }
     try {
         Service service = open_service(role, flags);
         return run(service);

@@ -35,7 +35,7 @@ std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
                                       const std::function<void()> &check = {});
 
 // Opens the service as `role` and returns what `run` returns; an exception out of either is
-// reported as "envdesign-ROLE: ..." with exit code 1.
+// reported as "envdesign-ROLE: ..." with exit code 1, a URL that is not LCM's with 2.
 int serve(const std::string &role, const CommonFlags &flags,
           const std::function<int(Service &)> &run);
 

@@ -16,6 +16,13 @@ std::string with_receive_buffer(const std::string &url) {
     return url + (url.find('?') == std::string::npos ? "?" : "&") + "recv_buf_size=4194304";
 }
 
+std::optional<std::string> url_problem(const std::string &url) {
+    for (const char *provider : {"udpm://", "mpudpm://", "tcpq://", "memq://", "file://"})
+        if (url.rfind(provider, 0) == 0)
+            return std::nullopt;
+    return "'" + url + "' is not an LCM URL (udpm://, mpudpm://, tcpq://, memq:// or file://)";
+}
+
 std::string instance_name(const std::string &role) {
     char host[256] = "host";
     gethostname(host, sizeof host - 1);

@@ -64,13 +64,12 @@ TEST(BadSpec, AMissingSpecFileExitsTwo) {
         << result.out;
 }
 
-// --connect with a URL LCM cannot open: a clear error naming it, not a 30 s wait.
-TEST(BadSpec, ConnectToAnUnusableUrlNamesIt) {
+// --connect with a URL that is not LCM's: a usage error naming it, not a 30 s wait.
+TEST(BadSpec, ConnectToANonLcmUrlIsAUsageError) {
     CommandResult result = run_envdesign("design " + std::string(ENVDESIGN_EXAMPLES) +
                                          "/restaurant/a-one-task-t1.textproto --connect bogus://x");
-    EXPECT_EQ(result.exit_code, 1);
-    EXPECT_NE(result.out.find("LCM cannot start on 'bogus://x'"), std::string::npos)
-        << result.out;
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_NE(result.out.find("'bogus://x' is not an LCM URL"), std::string::npos) << result.out;
 }
 
 } // namespace

@@ -243,6 +243,17 @@ TEST(EndToEnd, CliInterruptedCancelsTheRequest) {
     std::filesystem::remove(out);
 }
 
+TEST(EndToEnd, ServicesRefuseAUrlThatIsNotLcms) {
+    for (const char *service : {"envdesign-coordinator", "envdesign-planner"}) {
+        int exit_code = -1;
+        std::string said =
+            command_output(binary(service) + " --lcm-url bogus://x 2>&1", &exit_code);
+        EXPECT_EQ(exit_code, 2) << service;
+        EXPECT_NE(said.find("--lcm-url: 'bogus://x' is not an LCM URL"), std::string::npos)
+            << said;
+    }
+}
+
 TEST(EndToEnd, NoCoordinatorIsExit1) {
     client::Options options;
     options.give_up_after_s = 1;

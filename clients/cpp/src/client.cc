@@ -187,6 +187,9 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
     } catch (const SpecError &e) {
         return failure(2, e.what());
     }
+    std::string url = lcm_url.empty() ? default_url() : lcm_url;
+    if (auto problem = bus::url_problem(url))
+        return failure(2, *problem);
     request.sender = bus::instance_name("client");
     request.request_id = new_request_id();
     request.time_limit_s = options.time_limit_s;
@@ -194,8 +197,7 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
     request.prune = *prune;
     request.heuristic = *heuristic;
     try {
-        std::string url = bus::with_receive_buffer(lcm_url.empty() ? default_url() : lcm_url);
-        bus::Bus bus(url, client_logger(request.sender));
+        bus::Bus bus(bus::with_receive_buffer(url), client_logger(request.sender));
         return RemoteRun(bus, std::move(request), options).run();
     } catch (const std::exception &e) {
         return failure(1, e.what());
