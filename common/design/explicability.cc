@@ -27,7 +27,9 @@ std::optional<double> human_optimum(const ModelPair &models, PlanCache &planner,
 PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
                         PlanCache &planner, const Deadline &deadline) {
     return planner.solve_model(
-        lifted_key(domain, problem), [&] { return ground::ground(domain, problem); }, deadline);
+        lifted_key(domain, problem),
+        [&] { return ground::ground(domain, problem, nullptr, [&] { return deadline.expired(); }); },
+        deadline);
 }
 
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance) {

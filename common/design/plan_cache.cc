@@ -1,5 +1,7 @@
 #include "design/plan_cache.h"
 
+#include "ground/stop.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -14,7 +16,13 @@ PlanOutcome PlanCache::solve(const ground::GroundTask &task, const Deadline &dea
 PlanOutcome PlanCache::solve_model(const TaskKey &lifted,
                                    const std::function<ground::GroundTask()> &ground,
                                    const Deadline &deadline) {
-    return memoized(model_answers_, lifted, true, [&] { return solve(ground(), deadline); });
+    return memoized(model_answers_, lifted, true, [&] {
+        try {
+            return solve(ground(), deadline);
+        } catch (const ground::GroundingStopped &) {
+            return PlanOutcome{}; // LIMIT, and not kept
+        }
+    });
 }
 
 PlanOutcome PlanCache::memoized(Answers &answers, const TaskKey &key, bool lifted,

@@ -198,11 +198,13 @@ void add_complement_groups(GroundTask &task, const std::map<FactId, FactId> &com
 }  // namespace
 
 GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
-                  GroundingStatistics *statistics) {
-    Reachability reachability = explore(domain, problem);
+                  GroundingStatistics *statistics, const StopCheck &stop) {
+    Reachability reachability = explore(domain, problem, stop);
     TaskBuilder builder(domain, problem, reachability);
     GroundTask task = builder.build();
+    check(stop);
     add_mutex_groups(task, builder.fact_atoms());
+    check(stop);
     add_complement_groups(task, builder.complements());
     if (statistics) {
         statistics->reachable_atoms = static_cast<int>(reachability.atoms.size());

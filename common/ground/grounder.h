@@ -9,6 +9,7 @@
 // proves it unsolvable.
 
 #include "ground/ground_task.h"
+#include "ground/stop.h"
 #include "pddl/task.h"
 
 namespace envdesign::ground {
@@ -21,8 +22,9 @@ struct GroundingStatistics {
 };
 
 // Throws pddl::ParseError when the input is wrong in a way only grounding reveals
-// (e.g. an action cost refers to a function value the problem does not give).
+// (e.g. an action cost refers to a function value the problem does not give), and
+// GroundingStopped when `stop` says so (ground/stop.h).
 GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
-                  GroundingStatistics *statistics = nullptr);
+                  GroundingStatistics *statistics = nullptr, const StopCheck &stop = {});
 
 }  // namespace envdesign::ground

@@ -28,8 +28,9 @@ int decode_object(int arg) { return -arg - 1; }
 
 class Explorer {
 public:
-    Explorer(const pddl::Domain &domain, const pddl::Problem &problem, Reachability &out)
-        : domain_(domain), problem_(problem), out_(out) {}
+    Explorer(const pddl::Domain &domain, const pddl::Problem &problem, Reachability &out,
+             const StopCheck &stop)
+        : domain_(domain), problem_(problem), out_(out), stop_(stop) {}
 
     void run() {
         collect_objects();
@@ -45,6 +46,7 @@ public:
             int atom = queue_.front();
             queue_.pop_front();
             trigger(atom);
+            every_so_often();
         }
         out_.object_ids = object_ids_;
         out_.predicate_ids = predicate_ids_;
@@ -245,7 +247,14 @@ private:
         return key;
     }
 
+    // A clock read per step would cost more than the step.
+    void every_so_often() {
+        if (++steps_ % 4096 == 0)
+            check(stop_);
+    }
+
     void emit(const Schema &schema, const std::vector<int> &binding) {
+        every_so_often();
         for (auto [a, b] : schema.equal)
             if (resolve(a, binding) != resolve(b, binding))
                 return;
@@ -267,6 +276,8 @@ private:
     const pddl::Domain &domain_;
     const pddl::Problem &problem_;
     Reachability &out_;
+    const StopCheck &stop_;
+    std::uint64_t steps_ = 0;
     std::unordered_map<std::string, int> object_ids_, predicate_ids_;
     std::vector<std::set<std::string>> object_types_;
     std::vector<Schema> schemas_;
@@ -296,9 +307,10 @@ std::string Reachability::atom_name(const AtomKey &atom) const {
     return name + ")";
 }
 
-Reachability explore(const pddl::Domain &domain, const pddl::Problem &problem) {
+Reachability explore(const pddl::Domain &domain, const pddl::Problem &problem,
+                     const StopCheck &stop) {
     Reachability result;
-    Explorer explorer(domain, problem, result);
+    Explorer explorer(domain, problem, result, stop);
     explorer.run();
     return result;
 }

@@ -3,6 +3,7 @@
 // reachable when delete effects are ignored. This is where grounding spends its time, so it
 // works on object and predicate ids and joins preconditions through per-argument indexes.
 
+#include "ground/stop.h"
 #include "pddl/task.h"
 
 #include <cstdint>
@@ -44,6 +45,8 @@ struct Reachability {
     bool is_reached(const AtomKey &atom) const { return atom_index.count(atom) > 0; }
 };
 
-Reachability explore(const pddl::Domain &domain, const pddl::Problem &problem);
+// `stop` is asked every few thousand steps (ground/stop.h).
+Reachability explore(const pddl::Domain &domain, const pddl::Problem &problem,
+                     const StopCheck &stop = {});
 
 }  // namespace envdesign::ground

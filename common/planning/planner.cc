@@ -3,6 +3,7 @@
 #include "ground/grounder.h"
 #include "pddl/parser.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace envdesign::planning {
@@ -38,10 +39,28 @@ PlanReport plan_files(const std::string &domain_file, const std::string &problem
     pddl::Domain domain = pddl::parse_domain_file(domain_file);
     pddl::Problem problem = pddl::parse_problem_file(problem_file, domain);
     double parse_seconds = seconds_since(start);
+    // The time limit covers grounding too; the search gets what is left.
+    double limit = options.limits.time_limit_s;
+    ground::StopCheck stop;
+    if (limit > 0)
+        stop = [&] { return seconds_since(start) >= limit; };
     auto ground_start = std::chrono::steady_clock::now();
-    ground::GroundTask task = ground::ground(domain, problem);
+    ground::GroundTask task;
+    try {
+        task = ground::ground(domain, problem, nullptr, stop);
+    } catch (const ground::GroundingStopped &) {
+        PlanReport report;
+        report.status = search::SearchStatus::LIMIT;
+        report.parse_seconds = parse_seconds;
+        report.ground_seconds = seconds_since(ground_start);
+        report.total_seconds = seconds_since(start);
+        return report;
+    }
     double ground_seconds = seconds_since(ground_start);
-    PlanReport report = plan_task(task, options);
+    PlannerOptions searching = options;
+    if (limit > 0)
+        searching.limits.time_limit_s = std::max(0.001, limit - seconds_since(start));
+    PlanReport report = plan_task(task, searching);
     report.parse_seconds = parse_seconds;
     report.ground_seconds = ground_seconds;
     report.total_seconds = seconds_since(start);

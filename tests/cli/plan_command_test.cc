@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 namespace envdesign::testing {
 namespace {
 
@@ -42,6 +44,20 @@ TEST(PlanCommand, TimeLimitExitsFour) {
                                     false);
     EXPECT_EQ(r.exit_code, 4);
     EXPECT_NE(r.out.find("\"status\":\"limit\""), std::string::npos) << r.out;
+}
+
+TEST(PlanCommand, TimeLimitHoldsWhileGrounding) {
+    // 40 960 000 reachable actions: grounding alone would take minutes and gigabytes.
+    auto start = std::chrono::steady_clock::now();
+    CommandResult r = run_envdesign("plan --json --time-limit 0.5 " + DATA +
+                                        "/huge-grounding/domain.pddl " + DATA +
+                                        "/huge-grounding/problem.pddl",
+                                    false);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.exit_code, 4);
+    EXPECT_NE(r.out.find("\"status\":\"limit\""), std::string::npos) << r.out;
+    EXPECT_LT(seconds, 30); // stopped by the limit, not by finishing
 }
 
 TEST(PlanCommand, JsonCarriesCostAndSearchStatistics) {

@@ -33,6 +33,27 @@ const GroundOperator &find_operator(const GroundTask &task, const std::string &n
     return *it;
 }
 
+TEST(Grounder, StopsWhenAsked) {
+    const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/huge-grounding/";
+    pddl::Domain domain = pddl::parse_domain_file(dir + "domain.pddl");
+    pddl::Problem problem = pddl::parse_problem_file(dir + "problem.pddl", domain);
+    int asked = 0;
+    // Asked every few thousand steps while reachability runs: the fifth time says stop.
+    EXPECT_THROW(ground(domain, problem, nullptr, [&] { return ++asked == 5; }),
+                 GroundingStopped);
+    EXPECT_EQ(asked, 5);
+}
+
+TEST(Grounder, AStopThatNeverSaysStopChangesNothing) {
+    GroundTask plain = ground_tiny();
+    const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/tiny/";
+    pddl::Domain domain = pddl::parse_domain_file(dir + "domain.pddl");
+    pddl::Problem problem = pddl::parse_problem_file(dir + "problem.pddl", domain);
+    GroundTask asked = ground(domain, problem, nullptr, [] { return false; });
+    EXPECT_EQ(asked.fact_names, plain.fact_names);
+    EXPECT_EQ(asked.num_operators(), plain.num_operators());
+}
+
 TEST(Grounder, KeepsOnlyReachableRelevantFactsAndOperators) {
     GroundTask task = ground_tiny();
     // at x3, locked lab and its complement, visited hub; visited kitchen/lab are irrelevant.
