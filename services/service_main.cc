@@ -50,7 +50,8 @@ std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
 
 int serve(const std::string &role, const CommonFlags &flags,
           const std::function<int(Service &)> &run) {
-    if (auto problem = bus::url_problem(flags.lcm_url.empty() ? bus::default_url() : flags.lcm_url)) {
+    std::string url = flags.lcm_url.empty() ? bus::default_url() : flags.lcm_url;
+    if (auto problem = bus::url_problem(url)) {
         std::cerr << "envdesign-" << role << ": --lcm-url: " << *problem << std::endl;
         return 2;
     }

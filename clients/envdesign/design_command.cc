@@ -83,7 +83,8 @@ int run_design_remote(const DesignFlags &flags) {
     }
     std::cout << (flags.json ? result.json + "\n" : result.text) << std::flush;
     if (result.exit_code == 4)
-        spdlog::warn("the time limit stopped the search; the design is the best found");
+        spdlog::warn("{}; the design is the best found",
+                     interrupted ? "interrupted" : "the time limit stopped the search");
     return result.exit_code;
 }
 
@@ -131,7 +132,7 @@ int run_design(const DesignFlags &flags) {
     try {
         result = design::search_design(problem, evaluator, options,
                                        [&](const design::SearchProgress &p) { printer.update(p); });
-    } catch (const pddl::ParseError &e) {  // a modified model that does not ground
+    } catch (const pddl::ParseError &e) { // a modified model that does not ground
         std::cerr << "\n" << e.what() << std::endl;
         return 2;
     }

@@ -89,7 +89,11 @@ void Coordinator::on_request(const design_request_t &request) {
     }
     bus_.log().info("request {} | accepted: spec {} with {} file(s)", name, request.spec.name,
                     request.spec.files.size());
-    RunContext context{bus_, router_, specs_, config_.work_dir, config_.grace_s,
+    RunContext context{bus_,
+                       router_,
+                       specs_,
+                       config_.work_dir,
+                       config_.grace_s,
                        config_.stored_evaluations > 0 ? &stores_ : nullptr};
     open_[name].run = std::make_unique<RequestRun>(context, request);
     waiting_.push_back(name);
@@ -179,8 +183,7 @@ void Coordinator::close_finished() {
 
 // A request with a reason (a re-evaluation) gets what changed since its client's last
 // result for the same spec, and why.
-void Coordinator::note_change(const design_request_t &request,
-                              envdesign::design_result_t &result) {
+void Coordinator::note_change(const design_request_t &request, envdesign::design_result_t &result) {
     if (request.reason.empty() || result.status == "error")
         return;
     std::string key = request.sender + '\n' + request.spec.name;

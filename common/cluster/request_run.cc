@@ -1,9 +1,9 @@
 #include "cluster/request_run.h"
 
+#include "arrivals/stored_evaluator.h"
 #include "bus/channels.h"
 #include "bus/codec.h"
 #include "bus/log.h"
-#include "arrivals/stored_evaluator.h"
 #include "cluster/lcm_evaluator.h"
 #include "cluster/spec_chunks.h"
 #include "cluster/spec_loader.h"

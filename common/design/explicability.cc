@@ -28,7 +28,9 @@ PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem
                         PlanCache &planner, const Deadline &deadline) {
     return planner.solve_model(
         lifted_key(domain, problem),
-        [&] { return ground::ground(domain, problem, nullptr, [&] { return deadline.expired(); }); },
+        [&] {
+            return ground::ground(domain, problem, nullptr, [&] { return deadline.expired(); });
+        },
         deadline);
 }
 

@@ -98,8 +98,8 @@ int main(int argc, char **argv) {
     Flags flags;
     bridge::BridgeConfig config;
     add_flags(app, flags, config);
-    if (auto code = services::parse_command_line(app, argc, argv,
-                                                 [&] { finish_config(flags, config); }))
+    if (auto code =
+            services::parse_command_line(app, argc, argv, [&] { finish_config(flags, config); }))
         return *code;
     return services::serve("bridge", common, [&](services::Service &service) {
         config.instance = service.instance;

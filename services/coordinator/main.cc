@@ -37,7 +37,7 @@ int main(int argc, char **argv) {
     return services::serve("coordinator", common, [&](services::Service &service) {
         config.instance = service.instance;
         cluster::Coordinator coordinator(*service.bus, config);
-        return services::run_until_signal(
-            service, std::function<int()>([&] { return coordinator.tick(); }));
+        return services::run_until_signal(service,
+                                          std::function<int()>([&] { return coordinator.tick(); }));
     });
 }

@@ -92,8 +92,8 @@ void run_drift(const std::string &dir, Listener &lcm, Process &bridge, int domai
             EXPECT_GE(requests[i].message.distance, 0.3);
             flips += r.design != designs.back();
             // ENVDESIGN_RESULT says what changed and why.
-            std::string what = r.design != designs.back() ? "design {} -> {barrier-00-01}"
-                                                          : " unchanged";
+            std::string what =
+                r.design != designs.back() ? "design {} -> {barrier-00-01}" : " unchanged";
             EXPECT_NE(r.change.find(what), std::string::npos) << r.change;
             EXPECT_NE(r.change.find("drift: D {serve-g1: "), std::string::npos) << r.change;
         }

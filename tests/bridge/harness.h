@@ -2,8 +2,8 @@
 // Shared by the real-process tests of the bridge: paths, the loopback DDS configuration,
 // replay files, and starting the bridge, the publisher, the coordinator and planners.
 
-#include "listener.h"
 #include "../support/process.h"
+#include "listener.h"
 
 #include <gtest/gtest.h>
 

@@ -49,7 +49,7 @@ TEST_F(EvaluationStoresTest, TrimDropsTheLeastRecentlyUsed) {
     auto second = stores.store_for(blocks, 0);
     second->keep({0}, arrivals::task_key(blocks, 0), solved(3));
     stores.trim();
-    EXPECT_EQ(stores.stores(), 2u); // 4 records: nothing to drop
+    EXPECT_EQ(stores.stores(), 2u);  // 4 records: nothing to drop
     stores.store_for(restaurant, 0); // the restaurant is now the most recent
     second->keep({1}, arrivals::task_key(blocks, 0), solved(4));
     stores.trim(); // 5 records, but searches still hold both stores

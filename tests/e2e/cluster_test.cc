@@ -199,9 +199,9 @@ TEST(EndToEnd, CliConnectGivesTheSelfContainedResult) {
     LocalCluster cluster(2);
     std::string connect = " --connect '" + cluster.url() + "'";
     int exit_code = -1;
-    std::string json = command_output(
-        binary("envdesign") + " design " + source(RESTAURANT) + " --json" + connect + " 2>/dev/null",
-        &exit_code);
+    std::string json = command_output(binary("envdesign") + " design " + source(RESTAURANT) +
+                                          " --json" + connect + " 2>/dev/null",
+                                      &exit_code);
     ASSERT_EQ(exit_code, 0) << json << cluster.logs();
     expect_same_design(nlohmann::json::parse(json), self_contained(source(RESTAURANT)));
 
@@ -222,7 +222,9 @@ TEST(EndToEnd, CliInterruptedCancelsTheRequest) {
                        ("envdesign-cli-" + std::to_string(getpid()) + ".out"))
                           .string();
     Process cli({binary("envdesign"), "design", spec, "--json", "--connect", cluster.url()}, out);
-    auto searching = [&] { return cluster.coordinator().output().find("loaded:") != std::string::npos; };
+    auto searching = [&] {
+        return cluster.coordinator().output().find("loaded:") != std::string::npos;
+    };
     for (int i = 0; i < 500 && !searching(); ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     ASSERT_TRUE(searching()) << cluster.logs();
@@ -237,8 +239,9 @@ TEST(EndToEnd, CliInterruptedCancelsTheRequest) {
     auto json = nlohmann::json::parse(line);
     EXPECT_EQ(json.at("status"), "best_found");
     EXPECT_EQ(json.at("limit_reached"), true);
-    EXPECT_NE(cluster.coordinator().output().find("cancelled by the client: the client was stopped"),
-              std::string::npos)
+    EXPECT_NE(
+        cluster.coordinator().output().find("cancelled by the client: the client was stopped"),
+        std::string::npos)
         << cluster.logs();
     std::filesystem::remove(out);
 }
@@ -249,8 +252,7 @@ TEST(EndToEnd, ServicesRefuseAUrlThatIsNotLcms) {
         std::string said =
             command_output(binary(service) + " --lcm-url bogus://x 2>&1", &exit_code);
         EXPECT_EQ(exit_code, 2) << service;
-        EXPECT_NE(said.find("--lcm-url: 'bogus://x' is not an LCM URL"), std::string::npos)
-            << said;
+        EXPECT_NE(said.find("--lcm-url: 'bogus://x' is not an LCM URL"), std::string::npos) << said;
     }
 }
 
