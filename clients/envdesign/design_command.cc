@@ -56,6 +56,8 @@ design::DesignSearchOptions search_options(const DesignFlags &flags,
     double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem.time_limit_s;
     options.deadline = design::Deadline::in(seconds);
     options.batch_size = 4 * std::max(1, flags.workers);
+    options.method = flags.search == "exhaustive" ? design::SearchMethod::EXHAUSTIVE
+                                                  : design::SearchMethod::WITNESS;
     return options;
 }
 
@@ -73,6 +75,7 @@ int run_design_remote(const DesignFlags &flags) {
     options.time_limit_s = flags.time_limit_s;
     options.max_design_size = flags.max_design_size;
     options.prune = flags.prune;
+    options.search = flags.search;
     options.heuristic = flags.heuristic;
     options.on_progress = client::stderr_progress();
     options.stop_requested = [] { return interrupted != 0; };
@@ -101,6 +104,10 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
         .add_option("--max-design-size", flags.max_design_size,
                     "most modifications in a design (0: no limit; default: the spec's)")
         ->check(CLI::NonNegativeNumber);
+    command
+        .add_option("--search", flags.search,
+                    "witness (exact, grows designs where they matter) | exhaustive (every subset)")
+        ->check(CLI::IsMember({"witness", "exhaustive"}));
     command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
         ->check(CLI::IsMember({"none", "relevant"}));
     command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")

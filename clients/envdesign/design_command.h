@@ -13,6 +13,7 @@ struct DesignFlags {
     int workers = 1;
     double time_limit_s = -1; // < 0: the spec's time_limit_s
     int max_design_size = -1; // < 0: the spec's max_design_size
+    std::string search = "witness";
     std::string prune = "none";
     std::string heuristic = "lmcut";
     std::string connect; // LCM URL of a running coordinator; --workers does not apply then

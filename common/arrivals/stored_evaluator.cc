@@ -1,5 +1,7 @@
 #include "arrivals/stored_evaluator.h"
 
+#include <map>
+
 namespace envdesign::arrivals {
 
 using design::ConfigurationEvaluation;
@@ -24,49 +26,64 @@ StoredEvaluator::find(const design::Configuration &configuration, int task) {
     return store_.find(configuration, key(task));
 }
 
-ConfigurationEvaluation StoredEvaluator::from_store(const design::Configuration &configuration) {
-    ConfigurationEvaluation e;
-    e.configuration = configuration;
+// What the store adds to what the search already knows (status COMPLETE when every task
+// is known).
+ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluation &request) {
+    ConfigurationEvaluation e = request;
+    int tasks = static_cast<int>(problem_.tasks.size());
+    e.tasks.resize(tasks);
+    e.robot_cost_bounds.resize(tasks);
     e.status = design::EvaluationStatus::COMPLETE;
-    for (int t = 0; t < static_cast<int>(problem_.tasks.size()); ++t) {
-        e.tasks.push_back(find(configuration, t));
-        e.robot_cost_bounds.push_back(store_.find_robot_bound(configuration, key(t)));
-        if (!e.tasks.back())
+    for (int t = 0; t < tasks; ++t) {
+        if (!e.tasks[t])
+            e.tasks[t] = find(e.configuration, t);
+        if (!e.tasks[t] && !e.robot_cost_bounds[t])
+            e.robot_cost_bounds[t] = store_.find_robot_bound(e.configuration, key(t));
+        if (!e.tasks[t])
             e.status = design::EvaluationStatus::LIMIT; // not complete
     }
     return e;
 }
 
-void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation) {
+// Stores what `evaluation` holds beyond `request`: inherited tasks are not stored again.
+void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation,
+                           const ConfigurationEvaluation &request) {
     int tasks = static_cast<int>(std::min(evaluation.tasks.size(), problem_.tasks.size()));
+    auto given = [&](const auto &known, int t) {
+        return t < static_cast<int>(known.size()) && known[t].has_value();
+    };
     for (int t = 0; t < tasks; ++t) {
-        if (evaluation.tasks[t])
+        if (evaluation.tasks[t] && !given(request.tasks, t))
             store_.keep(evaluation.configuration, key(t), *evaluation.tasks[t]);
-        if (t < static_cast<int>(evaluation.robot_cost_bounds.size()) &&
-            evaluation.robot_cost_bounds[t])
+        if (given(evaluation.robot_cost_bounds, t) && !given(request.robot_cost_bounds, t))
             store_.keep_robot_bound(evaluation.configuration, key(t),
                                     *evaluation.robot_cost_bounds[t]);
     }
 }
 
-void StoredEvaluator::evaluate(const std::vector<design::Configuration> &batch,
+void StoredEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
                                const design::Deadline &deadline,
                                const design::EvaluationCallbacks &callbacks) {
     // Complete ones first: they may lower the best objective the partial ones are judged by.
     std::vector<ConfigurationEvaluation> partial;
-    for (const auto &configuration : batch) {
-        ConfigurationEvaluation known = from_store(configuration);
+    std::vector<const ConfigurationEvaluation *> requests;
+    for (const auto &request : batch) {
+        ConfigurationEvaluation known = from_store(request);
         if (known.status != design::EvaluationStatus::COMPLETE) {
             partial.push_back(std::move(known));
+            requests.push_back(&request);
             continue;
         }
         ++stored_answers_;
         callbacks.done(std::move(known));
     }
-    std::vector<design::Configuration> missing;
-    for (auto &known : partial) {
+    std::vector<ConfigurationEvaluation> missing;
+    std::map<design::Configuration, const ConfigurationEvaluation *> request_of;
+    for (std::size_t i = 0; i < partial.size(); ++i) {
+        auto &known = partial[i];
         if (!callbacks.abandon || !callbacks.abandon(known)) {
-            missing.push_back(known.configuration);
+            request_of[known.configuration] = requests[i];
+            missing.push_back(std::move(known));
             continue;
         }
         known.status = design::EvaluationStatus::CUT_OFF;
@@ -78,7 +95,7 @@ void StoredEvaluator::evaluate(const std::vector<design::Configuration> &batch,
     design::EvaluationCallbacks keeping;
     keeping.abandon = callbacks.abandon;
     keeping.done = [&](ConfigurationEvaluation evaluation) {
-        keep(evaluation);
+        keep(evaluation, *request_of.at(evaluation.configuration));
         callbacks.done(std::move(evaluation));
     };
     inner_.evaluate(missing, deadline, keeping);

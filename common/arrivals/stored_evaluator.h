@@ -37,7 +37,8 @@ public:
     StoredEvaluator(const design::DesignProblem &problem, design::Evaluator &inner,
                     EvaluationStore &store);
 
-    void evaluate(const std::vector<design::Configuration> &batch, const design::Deadline &deadline,
+    void evaluate(const std::vector<design::ConfigurationEvaluation> &batch,
+                  const design::Deadline &deadline,
                   const design::EvaluationCallbacks &callbacks) override;
     // The inner evaluator's counters: configurations answered from the store add nothing.
     design::EvaluatorCounters counters() const override { return inner_.counters(); }
@@ -51,8 +52,9 @@ public:
 private:
     const TaskKey &key(int task);
     // What the store knows of `configuration` (status COMPLETE when every task is known).
-    design::ConfigurationEvaluation from_store(const design::Configuration &configuration);
-    void keep(const design::ConfigurationEvaluation &evaluation);
+    design::ConfigurationEvaluation from_store(const design::ConfigurationEvaluation &request);
+    void keep(const design::ConfigurationEvaluation &evaluation,
+              const design::ConfigurationEvaluation &request);
 
     const design::DesignProblem &problem_;
     design::Evaluator &inner_;

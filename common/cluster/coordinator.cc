@@ -17,6 +17,9 @@ using envdesign::design_request_t;
 
 // Why `r` cannot be served (nullopt: it can).
 std::optional<std::string> request_problem(const design_request_t &r) {
+    if (r.search != design_request_t::SEARCH_WITNESS &&
+        r.search != design_request_t::SEARCH_EXHAUSTIVE)
+        return "unknown search " + std::to_string(r.search);
     if (r.prune != design_request_t::PRUNE_NONE && r.prune != design_request_t::PRUNE_RELEVANT)
         return "unknown prune " + std::to_string(r.prune);
     if (r.heuristic < design_request_t::HEURISTIC_LMCUT ||

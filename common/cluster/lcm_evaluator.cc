@@ -24,7 +24,7 @@ LcmEvaluator::LcmEvaluator(const design::DesignProblem &problem, JobRouter &rout
 
 LcmEvaluator::~LcmEvaluator() { router_.close(owner_); }
 
-void LcmEvaluator::evaluate(const std::vector<design::Configuration> &configurations,
+void LcmEvaluator::evaluate(const std::vector<design::ConfigurationEvaluation> &configurations,
                             const design::Deadline &deadline,
                             const design::EvaluationCallbacks &callbacks) {
     design::Dispatcher dispatcher(configurations, static_cast<int>(problem_.tasks.size()),
@@ -63,7 +63,8 @@ void LcmEvaluator::send_jobs(Batch &batch, const design::Deadline &deadline) {
         if (!job)
             return;
         envdesign::job_t message =
-            job_message(*job, batch.configurations[job->configuration], request_.request_id,
+            job_message(*job, batch.configurations[job->configuration].configuration,
+                        request_.request_id,
                         request_.spec_hash, request_.heuristic, deadline);
         batch.in_flight[router_.send(owner_, std::move(message))] = {*job, Clock::now()};
     }

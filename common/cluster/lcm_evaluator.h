@@ -47,7 +47,8 @@ public:
                  const std::atomic<bool> &cancelled, double grace_s = 1.0);
     ~LcmEvaluator() override;
 
-    void evaluate(const std::vector<design::Configuration> &batch, const design::Deadline &deadline,
+    void evaluate(const std::vector<design::ConfigurationEvaluation> &batch,
+                  const design::Deadline &deadline,
                   const design::EvaluationCallbacks &callbacks) override;
     design::EvaluatorCounters counters() const override;
 
@@ -68,7 +69,7 @@ private:
         std::chrono::steady_clock::time_point at;
     };
     struct Batch {
-        const std::vector<design::Configuration> &configurations;
+        const std::vector<design::ConfigurationEvaluation> &configurations;
         design::Dispatcher &dispatcher;
         std::map<std::int64_t, Sent> in_flight;
     };

@@ -103,6 +103,9 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     planning::PlannerOptions planner;
     planner.heuristic = heuristic_kind(request_.heuristic);
     design::PlanCache relevance_cache(planner); // --prune relevant plans on the coordinator
+    options.method = request_.search == design_request_t::SEARCH_EXHAUSTIVE
+                         ? design::SearchMethod::EXHAUSTIVE
+                         : design::SearchMethod::WITNESS;
     if (request_.prune == design_request_t::PRUNE_RELEVANT)
         options.relevant = [&](const design::Configuration &c) {
             return cancelled_ ? std::vector<int>{}

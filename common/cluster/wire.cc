@@ -150,6 +150,10 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
         e.status = evaluation_t::STATUS_LIMIT;
     }
     put_costs_and_plan(t, e);
+    e.has_human_plan = t.human_plan.has_value();
+    if (t.human_plan)
+        e.human_plan = *t.human_plan;
+    e.human_plan_length = static_cast<std::int16_t>(e.human_plan.size());
 }
 
 void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
@@ -178,6 +182,8 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
     if (e.has_human_optimal_cost)
         t.human_optimal_cost = e.human_optimal_cost;
     t.plan = e.plan;
+    if (e.has_human_plan)
+        t.human_plan = e.human_plan;
     return answer;
 }
 

@@ -1,5 +1,7 @@
 #include "design/design_search.h"
 
+#include "design/witness_search.h"
+
 #include <algorithm>
 #include <chrono>
 #include <climits>
@@ -161,6 +163,9 @@ private:
     void flush(std::vector<Configuration> &batch) {
         if (batch.empty())
             return;
+        std::vector<ConfigurationEvaluation> requests;
+        for (auto &c : batch)
+            requests.push_back(unevaluated(std::move(c)));
         EvaluationCallbacks callbacks;
         callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
             std::vector<const TaskExplicability *> known;
@@ -169,7 +174,7 @@ private:
             return cannot_win(partial.configuration, known, partial.robot_cost_bounds);
         };
         callbacks.done = [&](ConfigurationEvaluation e) { collect(std::move(e)); };
-        evaluator_.evaluate(batch, options_.deadline, callbacks);
+        evaluator_.evaluate(requests, options_.deadline, callbacks);
         batch.clear();
     }
 
@@ -186,16 +191,10 @@ private:
             return;
         }
         ++counters.configurations_evaluated;
-        EvaluatedDesign design;
-        double cost = design_cost(problem_, e.configuration);
+        std::vector<TaskExplicability> tasks;
         for (auto &t : e.tasks)
-            design.tasks.push_back(std::move(*t));
-        design.objective = objective_of(problem_, cost, design.tasks);
-        design.ranked = {design.objective.value, cost, e.configuration};
-        if (e.configuration.empty())
-            result_.baseline = design;
-        if (!result_.best || ranks_before(design.ranked, result_.best->ranked))
-            result_.best = std::move(design);
+            tasks.push_back(std::move(*t));
+        consider_design(problem_, e.configuration, std::move(tasks), result_);
         report();
     }
 
@@ -241,9 +240,24 @@ long long binomial(long long n, long long k) {
                                                         : static_cast<long long>(value + 0.5L);
 }
 
+void consider_design(const DesignProblem &problem, const Configuration &configuration,
+                     std::vector<TaskExplicability> tasks, DesignResult &result) {
+    EvaluatedDesign design;
+    double cost = design_cost(problem, configuration);
+    design.tasks = std::move(tasks);
+    design.objective = objective_of(problem, cost, design.tasks);
+    design.ranked = {design.objective.value, cost, configuration};
+    if (configuration.empty())
+        result.baseline = design;
+    if (!result.best || ranks_before(design.ranked, result.best->ranked))
+        result.best = std::move(design);
+}
+
 DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
                            const DesignSearchOptions &options,
                            const std::function<void(const SearchProgress &)> &progress) {
+    if (options.method == SearchMethod::WITNESS && !options.relevant)
+        return search_witness(problem, evaluator, options, progress);
     return Search(problem, evaluator, options, progress).run();
 }
 

@@ -29,11 +29,18 @@
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace envdesign::design {
 
+enum class SearchMethod {
+    WITNESS,    // the default: grows designs only by modifications that touch a witness
+    EXHAUSTIVE, // every subset (the cross-check)
+};
+
 struct DesignSearchOptions {
+    SearchMethod method = SearchMethod::WITNESS;
     int max_design_size = 0; // 0: no limit
     Deadline deadline;
     // --prune relevant: the modifications worth adding to a configuration (relevance.h);
@@ -44,10 +51,12 @@ struct DesignSearchOptions {
 
 struct SearchProgress {
     long long done = 0;  // configurations evaluated, abandoned or skipped
-    long long total = 0; // configurations in the search space (with --prune: generated so far)
+    long long total = 0; // configurations in the search space (witness, --prune: generated so far)
     double best_objective = INF;
     long long planner_runs = 0;
     long long cache_hits = 0;
+    long long open = -1;          // witness search: configurations waiting; -1: not kept
+    double least_open_bound = INF; // witness search: the least bound among them
 };
 
 struct DesignCounters {
@@ -56,6 +65,7 @@ struct DesignCounters {
     long long configurations_abandoned = 0; // dropped part-way by the bound
     long long configurations_skipped = 0;   // never started: the bound excluded them
     long long configurations_pruned = 0;    // never generated: --prune relevant left them out
+    long long tasks_inherited = 0; // witness search: task evaluations kept from a subset
     EvaluatorCounters evaluator;
     double seconds = 0;
 };
@@ -71,8 +81,19 @@ struct DesignResult {
     bool limit_reached = false;              // the deadline stopped the search
     std::optional<EvaluatedDesign> best;     // unset only if not even {} was evaluated
     std::optional<EvaluatedDesign> baseline; // the empty design
+    // When a limit stopped the search: the best objective minus the least bound still open
+    // (an optimal design is no better than best - gap).
+    std::optional<double> gap;
+    // Why the search had to look wider than the touched modifications (witness search):
+    // modifications that are not restricting or cost less than nothing.
+    std::vector<std::string> notes;
     DesignCounters counters;
 };
+
+// Shared by the searches: the evaluated design `configuration` (every task known), and
+// whether it replaces result.best (and result.baseline for {}).
+void consider_design(const DesignProblem &problem, const Configuration &configuration,
+                     std::vector<TaskExplicability> tasks, DesignResult &result);
 
 DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
                            const DesignSearchOptions &options,

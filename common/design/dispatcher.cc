@@ -2,16 +2,23 @@
 
 namespace envdesign::design {
 
-Dispatcher::Dispatcher(const std::vector<Configuration> &batch, int tasks, bool robot_bounds,
-                       const EvaluationCallbacks &callbacks)
-    : callbacks_(callbacks), tasks_(tasks), robot_bounds_(robot_bounds), progress_(batch.size()) {
-    for (const auto &c : batch)
-        state_.push_back({c, EvaluationStatus::LIMIT,
-                          std::vector<std::optional<TaskExplicability>>(tasks),
-                          std::vector<std::optional<double>>(tasks)});
-    if (!robot_bounds_)
-        for (auto &p : progress_)
-            p.bounds_sent = p.bounds_known = tasks;
+Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks,
+                       bool robot_bounds, const EvaluationCallbacks &callbacks)
+    : callbacks_(callbacks), robot_bounds_(robot_bounds), state_(batch),
+      progress_(batch.size()) {
+    for (std::size_t c = 0; c < state_.size(); ++c) {
+        ConfigurationEvaluation &e = state_[c];
+        e.status = EvaluationStatus::LIMIT;
+        e.tasks.resize(tasks);
+        e.robot_cost_bounds.resize(tasks);
+        for (int t = 0; t < tasks; ++t) {
+            if (e.tasks[t])
+                continue;
+            progress_[c].tasks_needed.push_back(t);
+            if (robot_bounds_ && !e.robot_cost_bounds[t])
+                progress_[c].bounds_needed.push_back(t);
+        }
+    }
 }
 
 std::optional<Job> Dispatcher::next_job() {
@@ -19,7 +26,7 @@ std::optional<Job> Dispatcher::next_job() {
         if (auto job = next_job_of(c))
             return job;
         const Progress &p = progress_[c];
-        if (c == first_open_ && (p.stopped || p.tasks_sent == tasks_))
+        if (c == first_open_ && (p.stopped || p.tasks_sent == needed(p)))
             ++first_open_; // nothing more to send for it
     }
     return std::nullopt;
@@ -29,11 +36,17 @@ std::optional<Job> Dispatcher::next_job_of(int c) {
     Progress &p = progress_[c];
     if (p.stopped)
         return std::nullopt;
-    if (p.bounds_sent < tasks_) {
-        ++p.in_flight;
-        return Job{c, p.bounds_sent++, JobKind::ROBOT_BOUND};
+    if (needed(p) == 0) { // everything was known
+        stop(c, EvaluationStatus::COMPLETE);
+        finish_if_idle(c);
+        return std::nullopt;
     }
-    if (p.bounds_known < tasks_ || p.tasks_sent == tasks_)
+    int bounds = static_cast<int>(p.bounds_needed.size());
+    if (p.bounds_sent < bounds) {
+        ++p.in_flight;
+        return Job{c, p.bounds_needed[p.bounds_sent++], JobKind::ROBOT_BOUND};
+    }
+    if (p.bounds_known < bounds || p.tasks_sent == needed(p))
         return std::nullopt; // waiting for answers
     if (abandon(c)) {
         stop(c, EvaluationStatus::CUT_OFF);
@@ -41,8 +54,10 @@ std::optional<Job> Dispatcher::next_job_of(int c) {
         return std::nullopt;
     }
     ++p.in_flight;
-    return Job{c, p.tasks_sent++, JobKind::EXPLICABILITY};
+    return Job{c, p.tasks_needed[p.tasks_sent++], JobKind::EXPLICABILITY};
 }
+
+int Dispatcher::needed(const Progress &p) { return static_cast<int>(p.tasks_needed.size()); }
 
 void Dispatcher::receive(JobAnswer a) {
     int c = a.job.configuration;
@@ -58,7 +73,8 @@ void Dispatcher::receive(JobAnswer a) {
     }
     if (!p.stopped && complete(c))
         stop(c, EvaluationStatus::COMPLETE);
-    else if (!p.stopped && p.bounds_known == tasks_ && abandon(c))
+    else if (!p.stopped && p.bounds_known == static_cast<int>(p.bounds_needed.size()) &&
+             abandon(c))
         stop(c, EvaluationStatus::CUT_OFF);
     finish_if_idle(c);
 }

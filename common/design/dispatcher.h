@@ -35,7 +35,7 @@ class Dispatcher {
 public:
     // `robot_bounds`: whether to ask for ROBOT_BOUND jobs at all (worth it only when the
     // robot's cost is weighted). `callbacks` must outlive the dispatcher.
-    Dispatcher(const std::vector<Configuration> &batch, int tasks, bool robot_bounds,
+    Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks, bool robot_bounds,
                const EvaluationCallbacks &callbacks);
 
     // The next job to send, or nullopt when nothing can be sent before more answers come.
@@ -46,22 +46,24 @@ public:
 
 private:
     struct Progress {
-        int bounds_sent = 0;
+        std::vector<int> bounds_needed; // tasks whose robot bound is asked for
+        std::vector<int> tasks_needed;  // tasks to evaluate
+        int bounds_sent = 0;            // of bounds_needed
         int bounds_known = 0;
-        int tasks_sent = 0;
+        int tasks_sent = 0; // of tasks_needed
         int in_flight = 0;
         std::optional<EvaluationStatus> stopped;
         bool finished = false;
     };
 
     std::optional<Job> next_job_of(int c);
+    static int needed(const Progress &p);
     bool complete(int c) const;
     void stop(int c, EvaluationStatus status);
     void finish_if_idle(int c);
     bool abandon(int c);
 
     const EvaluationCallbacks &callbacks_;
-    int tasks_;
     bool robot_bounds_;
     std::vector<ConfigurationEvaluation> state_;
     std::vector<Progress> progress_;

@@ -2,7 +2,9 @@
 // The boundary between the design search (the coordinator) and the planners.
 //
 // The search hands batches of configurations to an Evaluator and gets back, for each, the
-// explicability of every task. How the work is done is the evaluator's business: the
+// explicability of every task. A configuration may come with some tasks (and robot-cost
+// bounds) already known: the witness search inherits them from a smaller configuration
+// (witness_search.h); the evaluator works only on the rest and passes the known ones through. How the work is done is the evaluator's business: the
 // in-process LocalEvaluator (local_evaluator.h) runs N planner threads over a shared
 // content-addressed plan cache; an evaluator speaking to planner services over LCM (issue 5)
 // implements the same interface, and the search does not change.
@@ -15,7 +17,7 @@
 
 #include "design/configuration.h"
 #include "design/deadline.h"
-#include "design/explicability.h"
+#include "design/task_evaluation.h"
 
 #include <functional>
 #include <optional>
@@ -39,6 +41,9 @@ struct ConfigurationEvaluation {
     std::vector<std::optional<double>> robot_cost_bounds;
 };
 
+// A configuration with nothing known yet.
+ConfigurationEvaluation unevaluated(Configuration configuration);
+
 struct EvaluationCallbacks {
     std::function<bool(const ConfigurationEvaluation &partial)> abandon;
     std::function<void(ConfigurationEvaluation evaluation)> done;
@@ -57,8 +62,10 @@ public:
     virtual ~Evaluator();
     // Evaluates every configuration of `batch` (or abandons it, or runs out of time) and
     // calls callbacks.done once for each, in completion order, before returning.
-    virtual void evaluate(const std::vector<Configuration> &batch, const Deadline &deadline,
-                          const EvaluationCallbacks &callbacks) = 0;
+    // In `batch`, `tasks` and `robot_cost_bounds` hold what is known (either may be empty:
+    // nothing is); `status` is ignored.
+    virtual void evaluate(const std::vector<ConfigurationEvaluation> &batch,
+                          const Deadline &deadline, const EvaluationCallbacks &callbacks) = 0;
     virtual EvaluatorCounters counters() const = 0;
 };
 

@@ -11,15 +11,17 @@ namespace {
 
 double as_cost(long long cost) { return static_cast<double>(cost); }
 
-std::optional<double> human_optimum(const ModelPair &models, PlanCache &planner,
-                                    const Deadline &deadline, bool *limit) {
+// Sets c_H* and the human's optimal plan; false if the deadline passed first.
+bool solve_human(const ModelPair &models, PlanCache &planner, const Deadline &deadline,
+                 TaskExplicability &result) {
     PlanOutcome human = solve_model(models.human_domain, models.human_problem, planner, deadline);
-    *limit = human.status == PlanStatus::LIMIT;
-    if (human.status == PlanStatus::SOLVED)
-        return as_cost(human.cost);
-    if (human.status == PlanStatus::UNSOLVABLE)
-        return INF;
-    return std::nullopt;
+    if (human.status == PlanStatus::SOLVED) {
+        result.human_optimal_cost = as_cost(human.cost);
+        result.human_plan = std::move(human.plan);
+    } else if (human.status == PlanStatus::UNSOLVABLE) {
+        result.human_optimal_cost = INF;
+    }
+    return human.status != PlanStatus::LIMIT;
 }
 
 } // namespace
@@ -49,15 +51,13 @@ TaskExplicability evaluate_explicability(const ModelPair &models, Distance dista
     PlanOutcome explicable = solve_model(compiled.domain, compiled.problem, planner, deadline);
     if (explicable.status == PlanStatus::LIMIT)
         return result;
-    bool limit = false;
     if (explicable.status == PlanStatus::UNSOLVABLE) {
         result.status = ExplicabilityStatus::INEXPLICABLE;
         if (solve_human_anyway)
-            result.human_optimal_cost = human_optimum(models, planner, deadline, &limit);
+            solve_human(models, planner, deadline, result);
         return result;
     }
-    result.human_optimal_cost = human_optimum(models, planner, deadline, &limit);
-    if (limit)
+    if (!solve_human(models, planner, deadline, result))
         return TaskExplicability{};
     result.human_plan_cost = as_cost(explicable.cost);
     result.robot_cost = as_cost(explicable.secondary_cost);

@@ -14,30 +14,10 @@
 #include "design/deadline.h"
 #include "design/design_problem.h"
 #include "design/plan_cache.h"
+#include "design/task_evaluation.h"
 
-#include <limits>
-#include <optional>
-#include <string>
-#include <vector>
 
 namespace envdesign::design {
-
-inline constexpr double INF = std::numeric_limits<double>::infinity();
-
-enum class ExplicabilityStatus {
-    SOLVED,       // a most explicable plan was found
-    INEXPLICABLE, // P_mod (or P_H) has no plan: IE is infinite
-    LIMIT,        // the deadline passed first: nothing is known
-};
-
-struct TaskExplicability {
-    ExplicabilityStatus status = ExplicabilityStatus::LIMIT;
-    double ie = INF;
-    double robot_cost = INF;                  // c_R(pi)
-    double human_plan_cost = INF;             // c_H(pi)
-    std::optional<double> human_optimal_cost; // c_H*; INF if P_H has no plan; unset if not solved
-    std::vector<std::string> plan;            // pi, "(move c00 c10)" ...
-};
 
 // The planner's answer for one lifted model: skips grounding when the model was seen
 // (PlanCache::solve_model with lifted_key.h).

@@ -1,6 +1,7 @@
 #include "design/local_evaluator.h"
 
 #include "design/dispatcher.h"
+#include "design/explicability.h"
 
 #include <condition_variable>
 #include <deque>
@@ -11,6 +12,10 @@
 namespace envdesign::design {
 
 Evaluator::~Evaluator() = default;
+
+ConfigurationEvaluation unevaluated(Configuration configuration) {
+    return {std::move(configuration), EvaluationStatus::LIMIT, {}, {}};
+}
 
 namespace {
 
@@ -103,7 +108,8 @@ JobAnswer LocalEvaluator::run(const Configuration &configuration, const Job &job
     return answer;
 }
 
-void LocalEvaluator::evaluate(const std::vector<Configuration> &batch, const Deadline &deadline,
+void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
+                              const Deadline &deadline,
                               const EvaluationCallbacks &callbacks) {
     Dispatcher dispatcher(batch, static_cast<int>(problem_.tasks.size()), robot_bounds_, callbacks);
     Channel channel;
@@ -113,7 +119,7 @@ void LocalEvaluator::evaluate(const std::vector<Configuration> &batch, const Dea
             while (auto job = channel.receive_job()) {
                 Answer a{{*job, std::nullopt, {}}, nullptr};
                 try {
-                    a.answer = run(batch[job->configuration], *job, deadline);
+                    a.answer = run(batch[job->configuration].configuration, *job, deadline);
                 } catch (...) {
                     a.error = std::current_exception();
                 }

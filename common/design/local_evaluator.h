@@ -17,7 +17,7 @@ public:
     LocalEvaluator(const DesignProblem &problem, int workers,
                    planning::PlannerOptions options = {});
 
-    void evaluate(const std::vector<Configuration> &batch, const Deadline &deadline,
+    void evaluate(const std::vector<ConfigurationEvaluation> &batch, const Deadline &deadline,
                   const EvaluationCallbacks &callbacks) override;
     EvaluatorCounters counters() const override;
 

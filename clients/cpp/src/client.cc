@@ -45,6 +45,14 @@ std::optional<std::int8_t> prune_code(const std::string &prune) {
     return std::nullopt;
 }
 
+std::optional<std::int8_t> search_code(const std::string &search) {
+    if (search == "witness")
+        return design_request_t::SEARCH_WITNESS;
+    if (search == "exhaustive")
+        return design_request_t::SEARCH_EXHAUSTIVE;
+    return std::nullopt;
+}
+
 std::optional<std::int8_t> heuristic_code(const std::string &heuristic) {
     if (heuristic == "lmcut")
         return design_request_t::HEURISTIC_LMCUT;
@@ -178,9 +186,10 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
                          const Options &options) {
     auto prune = prune_code(options.prune);
     auto heuristic = heuristic_code(options.heuristic);
-    if (!prune || !heuristic)
-        return failure(2, "unknown prune '" + options.prune + "' or heuristic '" +
-                              options.heuristic + "'");
+    auto search = search_code(options.search);
+    if (!prune || !heuristic || !search)
+        return failure(2, "unknown search '" + options.search + "', prune '" + options.prune +
+                              "' or heuristic '" + options.heuristic + "'");
     design_request_t request{};
     try {
         request.spec = bundle_spec(spec_path);
@@ -195,6 +204,7 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
     request.time_limit_s = options.time_limit_s;
     request.max_design_size = options.max_design_size;
     request.prune = *prune;
+    request.search = *search;
     request.heuristic = *heuristic;
     try {
         bus::Bus bus(bus::with_receive_buffer(url), client_logger(request.sender));

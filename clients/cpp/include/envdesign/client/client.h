@@ -42,6 +42,7 @@ struct Progress {
 struct Options {
     double time_limit_s = -1;        // < 0: the spec's time_limit_s; 0: none
     int max_design_size = -1;        // < 0: the spec's; 0: no limit
+    std::string search = "witness";  // "witness" | "exhaustive"
     std::string prune = "none";      // "none" | "relevant"
     std::string heuristic = "lmcut"; // "lmcut" | "hmax" | "blind"
     double timeout_s = 0;            // stop waiting (and cancel) after this; 0: never

@@ -1,0 +1,37 @@
+#pragma once
+// One task's evaluation under one configuration, as a plain value: what crosses the
+// Evaluator boundary (evaluator.h), the wire and the evaluation store. No planner here.
+//
+//   plan       = pi, a most explicable plan (an optimal plan of P_mod);
+//   human_plan = an optimal plan of P_H, the plan observers expect.
+// Both are the witnesses of the evaluation: the design search (witness_search.h) keeps an
+// evaluation for a larger configuration when no added modification touches them.
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envdesign::design {
+
+inline constexpr double INF = std::numeric_limits<double>::infinity();
+
+enum class ExplicabilityStatus {
+    SOLVED,       // a most explicable plan was found
+    INEXPLICABLE, // P_mod (or P_H) has no plan: IE is infinite
+    LIMIT,        // the deadline passed first: nothing is known
+};
+
+struct TaskExplicability {
+    ExplicabilityStatus status = ExplicabilityStatus::LIMIT;
+    double ie = INF;
+    double robot_cost = INF;                  // c_R(pi)
+    double human_plan_cost = INF;             // c_H(pi)
+    std::optional<double> human_optimal_cost; // c_H*; INF if P_H has no plan; unset if not solved
+    std::vector<std::string> plan;            // pi, "(move c00 c10)" ...
+    // An optimal plan of P_H when one was found and kept; unset: not known (P_H unsolved,
+    // or the evaluation came from somewhere that did not keep it).
+    std::optional<std::vector<std::string>> human_plan;
+};
+
+} // namespace envdesign::design

@@ -1,0 +1,223 @@
+#include "design/witness.h"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+namespace envdesign::design {
+namespace {
+
+enum Side { ROBOT, HUMAN };
+const char *const kPrefix[] = {"R|", "H|"};
+
+// How a model's predicates are read: positively, negatively (preconditions and goals), and
+// which are fresh (declared by a modification).
+struct Uses {
+    std::set<std::string> positive, negative, fresh;
+
+    void add(const pddl::Literal &l) {
+        (l.negated ? negative : positive).insert(l.atom.predicate);
+    }
+};
+
+struct SpecLiteral {
+    std::string predicate;
+    std::string atom; // "(p a b)", or "(p ?x)" for schema literals
+    bool negated = false;
+};
+
+SpecLiteral literal_of(const pddl::SExpr &e) {
+    SpecLiteral l;
+    const pddl::SExpr *atom = &e;
+    if (e.has_head("not") && e.items.size() == 2) {
+        l.negated = true;
+        atom = &e.items[1];
+    }
+    l.atom = atom->to_string();
+    if (atom->is_list && !atom->items.empty() && !atom->items[0].is_list)
+        l.predicate = atom->items[0].symbol;
+    return l;
+}
+
+std::vector<Side> sides(Model model) {
+    std::vector<Side> out;
+    if (applies_to_robot(model))
+        out.push_back(ROBOT);
+    if (applies_to_human(model))
+        out.push_back(HUMAN);
+    return out;
+}
+
+std::string where(const Edit &edit) {
+    const auto &l = edit.location;
+    return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
+}
+
+// "(move c00 c10)" -> {"move", "c00", "c10"}
+std::vector<std::string> words_of(const std::string &step) {
+    std::string inner = step;
+    std::replace(inner.begin(), inner.end(), '(', ' ');
+    std::replace(inner.begin(), inner.end(), ')', ' ');
+    std::istringstream in(inner);
+    std::vector<std::string> words;
+    for (std::string w; in >> w;)
+        words.push_back(w);
+    return words;
+}
+
+std::string ground_atom(const pddl::Atom &atom, const pddl::Action &action,
+                        const std::vector<std::string> &arguments) {
+    std::string out = "(" + atom.predicate;
+    for (const auto &arg : atom.args) {
+        std::string value = arg;
+        for (std::size_t i = 0; i < action.parameters.size(); ++i)
+            if (action.parameters[i].name == arg)
+                value = arguments[i + 1];
+        out += " " + value;
+    }
+    return out + ")";
+}
+
+std::string literal_key(Side side, bool negated, const std::string &atom) {
+    return kPrefix[side] + std::string(negated ? "-|" : "+|") + atom;
+}
+
+} // namespace
+
+TouchIndex::TouchIndex(const DesignProblem &problem) {
+    Uses uses[2];
+    for (Side side : {ROBOT, HUMAN}) {
+        const pddl::Domain &domain = side == ROBOT ? problem.robot_domain : problem.human_domain;
+        for (const auto &action : domain.actions)
+            for (const auto &l : action.precondition)
+                uses[side].add(l);
+        for (const auto &task : problem.tasks)
+            for (const auto &l : (side == ROBOT ? task.robot_problem : task.human_problem).goal)
+                uses[side].add(l);
+    }
+    for (const auto &m : problem.modifications) {
+        for (const auto &edit : m.edits) {
+            for (Side side : sides(edit.model)) {
+                if (edit.kind == EditKind::ADD_PRECONDITION || edit.kind == EditKind::ADD_GOAL) {
+                    SpecLiteral l = literal_of(edit.expression);
+                    (l.negated ? uses[side].negative : uses[side].positive).insert(l.predicate);
+                }
+                const pddl::Domain &base =
+                    side == ROBOT ? problem.robot_domain : problem.human_domain;
+                if (edit.kind == EditKind::ADD_PREDICATE && edit.expression.is_list &&
+                    !edit.expression.items.empty() &&
+                    !base.find_predicate(edit.expression.items[0].symbol))
+                    uses[side].fresh.insert(edit.expression.items[0].symbol);
+            }
+        }
+    }
+
+    for (int i = 0; i < static_cast<int>(problem.modifications.size()); ++i) {
+        ModificationClass c;
+        for (const auto &edit : problem.modifications[i].edits) {
+            for (Side side : sides(edit.model)) {
+                const Uses &u = uses[side];
+                SpecLiteral l = literal_of(edit.expression);
+                bool fresh = u.fresh.count(l.predicate) > 0;
+                bool restricting = true;
+                std::string schema = kPrefix[side] + std::string("schema|") + edit.action;
+                switch (edit.kind) {
+                case EditKind::ADD_INIT:
+                    restricting = fresh || !u.positive.count(l.predicate);
+                    by_key_[literal_key(side, true, l.atom)].push_back(i);
+                    break;
+                case EditKind::REMOVE_INIT:
+                    restricting = fresh || !u.negative.count(l.predicate);
+                    by_key_[literal_key(side, false, l.atom)].push_back(i);
+                    break;
+                case EditKind::ADD_GOAL:
+                    (side == ROBOT ? every_robot_witness_ : every_human_witness_).push_back(i);
+                    break;
+                case EditKind::REMOVE_GOAL:
+                case EditKind::REMOVE_PRECONDITION:
+                    restricting = false;
+                    break;
+                case EditKind::ADD_PREDICATE:
+                    break;
+                case EditKind::ADD_PRECONDITION:
+                    by_key_[schema].push_back(i);
+                    break;
+                case EditKind::ADD_EFFECT:
+                case EditKind::REMOVE_EFFECT:
+                    restricting = fresh;
+                    by_key_[schema].push_back(i);
+                    break;
+                case EditKind::REMOVE_ACTION:
+                    by_key_[edit.expression.is_list
+                                ? kPrefix[side] + std::string("act|") + edit.expression.to_string()
+                                : kPrefix[side] + std::string("schema|") + edit.expression.symbol]
+                        .push_back(i);
+                    break;
+                }
+                if (side == ROBOT && edit.kind != EditKind::ADD_PREDICATE)
+                    c.edits_robot = true;
+                if (!restricting && side == ROBOT)
+                    c.robot_restricting = false;
+                if (!restricting && c.restricting) {
+                    c.restricting = false;
+                    c.why_not = edit_kind_name(edit.kind) + " " + edit.expression.to_string() +
+                                " (" + where(edit) + ")";
+                }
+            }
+        }
+        classes_.push_back(c);
+    }
+}
+
+void TouchIndex::add_key(const std::string &key, std::vector<int> &out) const {
+    auto it = by_key_.find(key);
+    if (it != by_key_.end())
+        out.insert(out.end(), it->second.begin(), it->second.end());
+}
+
+void TouchIndex::add_keys(const std::string &prefix, const pddl::Domain &domain,
+                          const pddl::Problem &problem, const std::vector<std::string> &plan,
+                          std::vector<int> &out, bool &known) const {
+    Side side = prefix == kPrefix[ROBOT] ? ROBOT : HUMAN;
+    for (const auto &l : problem.goal)
+        add_key(literal_key(side, l.negated, l.atom.to_string()), out);
+    for (const auto &step : plan) {
+        std::vector<std::string> words = words_of(step);
+        const pddl::Action *action = words.empty() ? nullptr : domain.find_action(words[0]);
+        if (!action || action->parameters.size() + 1 != words.size()) {
+            known = false; // a step this model does not have: say nothing
+            return;
+        }
+        add_key(prefix + "act|" + step, out);
+        add_key(prefix + "schema|" + action->name, out);
+        for (const auto &l : action->precondition)
+            if (l.atom.predicate != "=")
+                add_key(literal_key(side, l.negated, ground_atom(l.atom, *action, words)), out);
+    }
+}
+
+std::vector<int> TouchIndex::touching(const ModelPair &models, const TaskExplicability &evaluation,
+                                      bool &known) const {
+    known = true;
+    std::vector<int> out;
+    if (evaluation.status == ExplicabilityStatus::INEXPLICABLE)
+        return out; // no plan: restricting modifications keep it so
+    if (evaluation.status != ExplicabilityStatus::SOLVED || !evaluation.human_plan) {
+        known = false;
+        return out;
+    }
+    add_keys(kPrefix[ROBOT], models.robot_domain, models.robot_problem, evaluation.plan, out,
+             known);
+    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, evaluation.plan, out,
+             known);
+    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, *evaluation.human_plan,
+             out, known);
+    out.insert(out.end(), every_robot_witness_.begin(), every_robot_witness_.end());
+    out.insert(out.end(), every_human_witness_.begin(), every_human_witness_.end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    std::erase_if(out, [&](int m) { return !classes_[m].restricting; });
+    return out;
+}
+
+} // namespace envdesign::design

@@ -1,0 +1,70 @@
+#pragma once
+// Which modifications can change a task's evaluation: the touch test of the witness search
+// (witness_search.h).
+//
+// A modification is *restricting* when, combined with any other modifications, it only
+// removes plans of P_R, P_H and P_mod and never makes a plan cheaper. Classified edit by
+// edit, soundly (when unsure: not restricting):
+//   - add_precondition (any literal), remove_action (a schema or one ground action), add_goal
+//     and add_predicate are restricting;
+//   - remove_init of an atom whose predicate no precondition or goal uses negatively, and
+//     add_init of an atom whose predicate none uses positively, are restricting: every state
+//     reached keeps the other atoms, so a plan valid after the edit was valid before;
+//   - any init or effect edit over a *fresh* predicate (declared by add_predicate) is
+//     restricting: a fresh fluent is read only by added preconditions, so dropping it maps
+//     every plan of the modified model to a plan of the original one of the same cost;
+//   - remove_precondition, remove_goal, and other add_init, remove_init, add_effect and
+//     remove_effect edits are not.
+// "Uses" are collected over both domains, every task's goals and every modification's added
+// preconditions and goals, per model (the compilation keeps the robot's and the human's
+// fluents apart).
+//
+// A modification *touches* a witness (an optimal plan found for a configuration) when it
+// changes something the plan's validity or cost depends on: a precondition or effect of a
+// schema the plan uses (or removes it, or one of its ground actions), an init atom that one
+// of its steps or the goal needs (remove_init) or needs absent (add_init). add_goal touches
+// every witness of the model it edits. Robot-model edits touch P_mod's witness only, human
+// ones both P_mod's and P_H's.
+
+#include "design/configuration.h"
+#include "design/task_evaluation.h"
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace envdesign::design {
+
+struct ModificationClass {
+    bool restricting = true;       // every edit is restricting
+    bool robot_restricting = true; // every edit of the robot's model is
+    bool edits_robot = false;      // it edits the robot's model at all
+    std::string why_not;           // the first edit that is not restricting, for the result
+};
+
+class TouchIndex {
+public:
+    explicit TouchIndex(const DesignProblem &problem);
+
+    const ModificationClass &of(int modification) const { return classes_[modification]; }
+    int size() const { return static_cast<int>(classes_.size()); }
+
+    // The restricting modifications (ascending) that touch the witnesses of `evaluation`, an
+    // evaluation made under `models`. `known` is set false when a witness is missing (an
+    // evaluation with no human plan): then nothing can be said and the caller must assume
+    // that every modification touches it.
+    std::vector<int> touching(const ModelPair &models, const TaskExplicability &evaluation,
+                              bool &known) const;
+
+private:
+    void add_keys(const std::string &prefix, const pddl::Domain &domain,
+                  const pddl::Problem &problem, const std::vector<std::string> &plan,
+                  std::vector<int> &out, bool &known) const;
+    void add_key(const std::string &key, std::vector<int> &out) const;
+
+    std::vector<ModificationClass> classes_;
+    std::unordered_map<std::string, std::vector<int>> by_key_; // touch key -> modifications
+    std::vector<int> every_robot_witness_, every_human_witness_; // add_goal
+};
+
+} // namespace envdesign::design

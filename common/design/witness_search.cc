@@ -1,0 +1,372 @@
+#include "design/witness_search.h"
+
+#include "design/witness.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <queue>
+#include <set>
+
+namespace envdesign::design {
+namespace {
+
+// A task's evaluation under some configuration, with the modifications that can change it.
+struct TaskRecord {
+    TaskExplicability evaluation;
+    std::vector<int> touching; // restricting modifications touching its witnesses, ascending
+    bool witnesses_known = true; // false: any modification may change it
+};
+using Record = std::shared_ptr<const TaskRecord>;
+
+struct Node {
+    Configuration configuration;
+    std::vector<Record> tasks;                       // null: to be evaluated
+    std::vector<std::optional<double>> robot_bounds; // c_R* under this configuration
+    double cost = 0;                                 // C(xi)
+    double bound = 0; // on the objective of this configuration and of every superset
+};
+
+// Least bound first; then the order in which SPEC.md breaks ties.
+struct LaterInQueue {
+    bool operator()(const Node &a, const Node &b) const {
+        if (a.bound != b.bound)
+            return a.bound > b.bound;
+        if (a.configuration.size() != b.configuration.size())
+            return a.configuration.size() > b.configuration.size();
+        if (a.cost != b.cost)
+            return a.cost > b.cost;
+        return a.configuration > b.configuration;
+    }
+};
+
+bool contains(const std::vector<int> &sorted, int value) {
+    return std::binary_search(sorted.begin(), sorted.end(), value);
+}
+
+class WitnessSearch {
+public:
+    WitnessSearch(const DesignProblem &problem, Evaluator &evaluator,
+                  const DesignSearchOptions &options,
+                  const std::function<void(const SearchProgress &)> &progress)
+        : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
+          index_(problem), tasks_(static_cast<int>(problem.tasks.size())) {
+        const double beta = problem.weights.beta;
+        for (int m = 0; m < index_.size(); ++m) {
+            const ModificationClass &c = index_.of(m);
+            const Modification &mod = problem.modifications[m];
+            bool negative = beta * mod.cost < 0;
+            if (!c.restricting)
+                result_.notes.push_back("modification '" + mod.name + "' is not restricting (" +
+                                        c.why_not + "): added to every configuration");
+            else if (negative)
+                result_.notes.push_back("modification '" + mod.name +
+                                        "' has a negative cost: added to every configuration");
+            if (!c.restricting || negative)
+                always_.push_back(m);
+            if (!c.robot_restricting)
+                robot_relaxing_.push_back(m);
+            if (negative)
+                negative_.push_back(m);
+        }
+        max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
+    }
+
+    DesignResult run() {
+        auto start = std::chrono::steady_clock::now();
+        Node root{{}, std::vector<Record>(tasks_), std::vector<std::optional<double>>(tasks_)};
+        root.bound = bound(root);
+        visited_.insert(root.configuration);
+        ++generated_;
+        open_.push(std::move(root));
+        bool interrupted = false;
+        while (!open_.empty()) {
+            if (options_.deadline.expired()) {
+                interrupted = true;
+                break;
+            }
+            evaluate(next_batch());
+        }
+        result_.limit_reached = interrupted || limit_seen_;
+        result_.optimal = !result_.limit_reached;
+        if (result_.limit_reached) {
+            double least = std::min(open_.empty() ? INF : open_.top().bound, least_unfinished_);
+            result_.gap = result_.best ? std::max(0.0, result_.best->objective.value - least) : INF;
+        }
+        auto &counters = result_.counters;
+        counters.configurations_total = generated_;
+        counters.evaluator = evaluator_.counters();
+        counters.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        report();
+        return std::move(result_);
+    }
+
+private:
+    // The next configurations worth evaluating, least bound first.
+    std::vector<Node> next_batch() {
+        std::vector<Node> batch;
+        while (!open_.empty() && static_cast<int>(batch.size()) < std::max(1, options_.batch_size)) {
+            if (result_.best && clearly_greater(open_.top().bound, result_.best->objective.value)) {
+                skip(static_cast<long long>(open_.size())); // every other bound is larger
+                open_ = {};
+                break;
+            }
+            Node node = open_.top();
+            open_.pop();
+            if (can_win(node.bound, node.configuration.size()))
+                batch.push_back(std::move(node));
+            else
+                skip(1);
+        }
+        return batch;
+    }
+
+    void evaluate(std::vector<Node> batch) {
+        if (batch.empty())
+            return;
+        std::vector<ConfigurationEvaluation> requests;
+        std::map<Configuration, std::size_t> position;
+        for (std::size_t i = 0; i < batch.size(); ++i) {
+            ConfigurationEvaluation r = unevaluated(batch[i].configuration);
+            r.robot_cost_bounds = batch[i].robot_bounds;
+            for (const auto &record : batch[i].tasks)
+                r.tasks.push_back(record ? std::optional(record->evaluation) : std::nullopt);
+            position[r.configuration] = i;
+            requests.push_back(std::move(r));
+        }
+        EvaluationCallbacks callbacks;
+        callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
+            const Node &node = batch[position.at(partial.configuration)];
+            Node known = node; // what the answers so far add; their witnesses are not read yet
+            for (int t = 0; t < tasks_; ++t)
+                if (!known.robot_bounds[t] && t < static_cast<int>(partial.robot_cost_bounds.size()))
+                    known.robot_bounds[t] = partial.robot_cost_bounds[t];
+            return !can_win(bound(known), node.configuration.size());
+        };
+        callbacks.done = [&](ConfigurationEvaluation e) {
+            Node &node = batch[position.at(e.configuration)];
+            finish(node, std::move(e));
+        };
+        evaluator_.evaluate(requests, options_.deadline, callbacks);
+    }
+
+    void finish(Node &node, ConfigurationEvaluation e) {
+        auto &counters = result_.counters;
+        if (e.status == EvaluationStatus::LIMIT) {
+            limit_seen_ = true;
+            least_unfinished_ = std::min(least_unfinished_, node.bound);
+            return;
+        }
+        ++done_;
+        if (e.status == EvaluationStatus::CUT_OFF) {
+            ++counters.configurations_abandoned;
+            report();
+            return;
+        }
+        ++counters.configurations_evaluated;
+        std::vector<TaskExplicability> evaluations;
+        for (int t = 0; t < tasks_; ++t) {
+            if (node.tasks[t]) {
+                ++counters.tasks_inherited;
+            } else {
+                auto record = std::make_shared<TaskRecord>();
+                record->evaluation = std::move(*e.tasks[t]);
+                ModelPair models = configured_models(problem_, node.configuration, t);
+                record->touching =
+                    index_.touching(models, record->evaluation, record->witnesses_known);
+                node.tasks[t] = std::move(record);
+            }
+            if (!node.robot_bounds[t] && t < static_cast<int>(e.robot_cost_bounds.size()))
+                node.robot_bounds[t] = e.robot_cost_bounds[t];
+            evaluations.push_back(node.tasks[t]->evaluation);
+        }
+        consider_design(problem_, node.configuration, std::move(evaluations), result_);
+        node.bound = bound(node);
+        grow(node);
+        report();
+    }
+
+    // Queues the configurations one modification larger that can matter (witness_search.h).
+    void grow(const Node &node) {
+        const Configuration &c = node.configuration;
+        if (static_cast<int>(c.size()) >= max_size_ || !can_win(node.bound, c.size() + 1))
+            return;
+        for (int m : candidates(node)) {
+            Configuration child_configuration = c;
+            child_configuration.insert(
+                std::upper_bound(child_configuration.begin(), child_configuration.end(), m), m);
+            if (!visited_.insert(child_configuration).second)
+                continue;
+            ++generated_;
+            const ModificationClass &k = index_.of(m);
+            Node child{std::move(child_configuration), node.tasks, node.robot_bounds,
+                       node.cost + problem_.modifications[m].cost, 0};
+            for (int t = 0; t < tasks_; ++t) {
+                const Record &r = node.tasks[t];
+                if (!k.restricting || !r->witnesses_known || contains(r->touching, m))
+                    child.tasks[t] = nullptr;
+                if (k.edits_robot)
+                    child.robot_bounds[t].reset();
+            }
+            child.bound = bound(child);
+            if (can_win(child.bound, child.configuration.size()))
+                open_.push(std::move(child));
+            else
+                skip(1);
+        }
+    }
+
+    // The modifications that can change a task of `node` (or are added everywhere).
+    std::vector<int> candidates(const Node &node) const {
+        std::set<int> out(always_.begin(), always_.end());
+        for (int t = 0; t < tasks_; ++t) {
+            if (problem_.tasks[t].probability <= 0)
+                continue;
+            const Record &r = node.tasks[t];
+            if (!r->witnesses_known) {
+                for (int m = 0; m < index_.size(); ++m)
+                    out.insert(m);
+                break;
+            }
+            out.insert(r->touching.begin(), r->touching.end());
+        }
+        std::vector<int> result;
+        for (int m : out)
+            if (!contains(node.configuration, m))
+                result.push_back(m);
+        return result;
+    }
+
+    // A lower bound on the objective of `node`'s configuration and of every superset.
+    double bound(const Node &node) const {
+        const Configuration &c = node.configuration;
+        const ObjectiveWeights &w = problem_.weights;
+        auto outside = [&](const std::vector<int> &mods) {
+            return std::any_of(mods.begin(), mods.end(), [&](int m) { return !contains(c, m); });
+        };
+        bool always_outside = outside(always_);
+        bool robot_monotone = !outside(robot_relaxing_);
+        double negative = 0;
+        for (int m : negative_)
+            if (!contains(c, m))
+                negative += w.beta * problem_.modifications[m].cost;
+
+        // Per task: its value if it is settled for every superset, else its least value.
+        std::vector<const TaskExplicability *> settled(tasks_, nullptr);
+        std::vector<std::optional<double>> robot_bounds(tasks_);
+        std::vector<std::vector<int>> open_touching(tasks_);
+        std::vector<bool> shares(tasks_, false);
+        std::vector<int> degree(index_.size(), 0);
+        for (int t = 0; t < tasks_; ++t) {
+            if (robot_monotone)
+                robot_bounds[t] = node.robot_bounds[t];
+            const Record &r = node.tasks[t];
+            if (!r || !r->witnesses_known || problem_.tasks[t].probability <= 0)
+                continue;
+            for (int m : r->touching)
+                if (!contains(c, m))
+                    open_touching[t].push_back(m);
+            if (open_touching[t].empty() && !always_outside) {
+                settled[t] = &r->evaluation;
+                continue;
+            }
+            if (r->evaluation.status != ExplicabilityStatus::SOLVED || negative < 0)
+                continue;
+            shares[t] = true;
+            for (int m : open_touching[t])
+                ++degree[m];
+            for (int m : always_)
+                degree[m] += contains(c, m) ? 0 : 1;
+        }
+        double total = objective_lower_bound(problem_, node.cost, settled, robot_bounds);
+        if (std::isinf(total))
+            return total;
+        total += negative;
+        // Shared costs: a task keeps its value unless a modification touching it is added.
+        double horizon = discounted_horizon(w);
+        double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
+        for (int t = 0; t < tasks_; ++t) {
+            if (!shares[t])
+                continue;
+            const TaskExplicability &e = node.tasks[t]->evaluation;
+            double p = problem_.tasks[t].probability;
+            double robot_least = robot_bounds[t].value_or(0.0);
+            double excess = w.alpha * horizon * p * (e.ie - least_ie) +
+                            w.kappa * w.horizon * p * (e.robot_cost - robot_least);
+            double share = INF;
+            auto consider = [&](int m) {
+                share = std::min(share, w.beta * problem_.modifications[m].cost / degree[m]);
+            };
+            for (int m : open_touching[t])
+                consider(m);
+            for (int m : always_)
+                if (!contains(c, m))
+                    consider(m);
+            double extra = std::min(excess, share);
+            if (extra > 0 && std::isfinite(extra))
+                total += extra;
+        }
+        return total;
+    }
+
+    // Whether a design of objective >= `bound` with at least `size` modifications could still
+    // rank before the best one.
+    bool can_win(double bound, std::size_t size) const {
+        if (!result_.best)
+            return true;
+        double best = result_.best->objective.value;
+        if (nearly_equal(bound, best))
+            return size <= result_.best->ranked.configuration.size();
+        return bound < best;
+    }
+
+    void skip(long long count) {
+        result_.counters.configurations_skipped += count;
+        done_ += count;
+    }
+
+    void report() const {
+        if (!progress_)
+            return;
+        EvaluatorCounters e = evaluator_.counters();
+        SearchProgress p{done_,
+                         generated_,
+                         result_.best ? result_.best->objective.value : INF,
+                         e.planner_runs,
+                         e.cache_hits,
+                         static_cast<long long>(open_.size()),
+                         open_.empty() ? INF : open_.top().bound};
+        progress_(p);
+    }
+
+    const DesignProblem &problem_;
+    Evaluator &evaluator_;
+    const DesignSearchOptions &options_;
+    const std::function<void(const SearchProgress &)> &progress_;
+    TouchIndex index_;
+    int tasks_;
+    int max_size_ = 0;
+    std::vector<int> always_;         // added to every configuration
+    std::vector<int> robot_relaxing_; // may lower the robot's optimal cost
+    std::vector<int> negative_;       // of negative weighted cost
+    std::priority_queue<Node, std::vector<Node>, LaterInQueue> open_;
+    std::set<Configuration> visited_;
+    DesignResult result_;
+    long long generated_ = 0;
+    long long done_ = 0;
+    bool limit_seen_ = false;
+    double least_unfinished_ = INF;
+};
+
+} // namespace
+
+DesignResult search_witness(const DesignProblem &problem, Evaluator &evaluator,
+                            const DesignSearchOptions &options,
+                            const std::function<void(const SearchProgress &)> &progress) {
+    return WitnessSearch(problem, evaluator, options, progress).run();
+}
+
+} // namespace envdesign::design
