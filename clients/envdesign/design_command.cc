@@ -46,6 +46,10 @@ void print_text(const design::DesignProblem &problem, const design::DesignResult
             std::cout << " " << step;
         std::cout << "\n";
     }
+    if (result.gap)
+        std::cout << "proven gap: " << number(*result.gap) << "\n";
+    for (const auto &note : result.notes)
+        std::cout << "note: " << note << "\n";
 }
 
 design::DesignSearchOptions search_options(const DesignFlags &flags,

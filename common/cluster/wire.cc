@@ -51,6 +51,7 @@ envdesign::design_counters_t counters_message(const design::DesignCounters &c,
     m.configurations_abandoned = c.configurations_abandoned;
     m.configurations_skipped = c.configurations_skipped;
     m.configurations_pruned = c.configurations_pruned;
+    m.tasks_inherited = c.tasks_inherited;
     m.task_evaluations = c.evaluator.task_evaluations;
     m.planner_runs = c.evaluator.planner_runs;
     m.cache_hits = c.evaluator.cache_hits;
@@ -207,6 +208,10 @@ envdesign::design_result_t result_message(const design::DesignProblem &problem,
         m.baseline = terms_message(result.baseline->objective);
     m.counters = counters_message(result.counters, transport);
     m.limit_reached = result.limit_reached;
+    m.has_gap = result.gap.has_value();
+    m.gap = result.gap.value_or(0);
+    m.notes = result.notes;
+    m.num_notes = static_cast<std::int16_t>(m.notes.size());
     return m;
 }
 

@@ -28,11 +28,18 @@ void ProgressPrinter::update(const SearchProgress &p) {
     std::string bar(std::min(filled, WIDTH), '#');
     bar.resize(WIDTH, '-');
     double seconds = std::chrono::duration<double>(now - start_).count();
-    std::fprintf(out_,
-                 "\r[%s] %lld/%lld configurations | best %s | %lld planner runs | "
-                 "%lld cache hits | %.1fs\033[K",
-                 bar.c_str(), p.done, p.total, number(p.best_objective).c_str(), p.planner_runs,
-                 p.cache_hits, seconds);
+    if (p.open >= 0) // the witness search: no fixed total, a bound instead
+        std::fprintf(out_,
+                     "\r%lld visited, %lld open | best %s | least open bound %s | "
+                     "%lld planner runs | %.1fs\033[K",
+                     p.done, p.open, number(p.best_objective).c_str(),
+                     number(p.least_open_bound).c_str(), p.planner_runs, seconds);
+    else
+        std::fprintf(out_,
+                     "\r[%s] %lld/%lld configurations | best %s | %lld planner runs | "
+                     "%lld cache hits | %.1fs\033[K",
+                     bar.c_str(), p.done, p.total, number(p.best_objective).c_str(),
+                     p.planner_runs, p.cache_hits, seconds);
     std::fflush(out_);
     drawn_ = true;
 }
@@ -43,12 +50,16 @@ std::string ProgressPrinter::summary(const DesignResult &r) {
                        std::to_string(c.configurations_total) + " configurations evaluated, " +
                        std::to_string(c.configurations_abandoned) + " abandoned and " +
                        std::to_string(c.configurations_skipped) + " skipped by the bound";
+    if (c.tasks_inherited > 0)
+        line += ", " + std::to_string(c.tasks_inherited) + " task evaluations inherited";
     if (c.configurations_pruned > 0)
         line += ", " + std::to_string(c.configurations_pruned) + " pruned as irrelevant";
     line += "; " + std::to_string(c.evaluator.planner_runs) + " planner runs, " +
             std::to_string(c.evaluator.cache_hits) + " cache hits; best " +
             number(r.best ? r.best->objective.value : INF) + " (" +
             (r.optimal ? "optimal" : "best found") + ") in " + number(c.seconds) + " s";
+    if (r.gap)
+        line += "; proven gap " + number(*r.gap);
     return line;
 }
 

@@ -91,6 +91,10 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
     out["groundings_skipped"] = c.evaluator.groundings_skipped;
     out["planner_seconds"] = c.evaluator.planner_seconds;
     out["limit_reached"] = result.limit_reached;
+    out["tasks_inherited"] = c.tasks_inherited;
+    if (result.gap)
+        out["gap"] = json_number(*result.gap);
+    out["notes"] = result.notes;
     return out;
 }
 

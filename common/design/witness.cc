@@ -143,10 +143,15 @@ TouchIndex::TouchIndex(const DesignProblem &problem) {
                     by_key_[schema].push_back(i);
                     break;
                 case EditKind::ADD_EFFECT:
-                case EditKind::REMOVE_EFFECT:
-                    restricting = fresh;
+                case EditKind::REMOVE_EFFECT: {
+                    // Adding a delete or dropping an add leaves fewer atoms of the predicate
+                    // in every state reached; the opposite leaves more.
+                    bool fewer = l.negated == (edit.kind == EditKind::ADD_EFFECT);
+                    restricting = fresh || (fewer ? !u.negative.count(l.predicate)
+                                                  : !u.positive.count(l.predicate));
                     by_key_[schema].push_back(i);
                     break;
+                }
                 case EditKind::REMOVE_ACTION:
                     by_key_[edit.expression.is_list
                                 ? kPrefix[side] + std::string("act|") + edit.expression.to_string()

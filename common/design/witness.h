@@ -7,14 +7,15 @@
 // edit, soundly (when unsure: not restricting):
 //   - add_precondition (any literal), remove_action (a schema or one ground action), add_goal
 //     and add_predicate are restricting;
-//   - remove_init of an atom whose predicate no precondition or goal uses negatively, and
-//     add_init of an atom whose predicate none uses positively, are restricting: every state
-//     reached keeps the other atoms, so a plan valid after the edit was valid before;
-//   - any init or effect edit over a *fresh* predicate (declared by add_predicate) is
+//   - remove_init of an atom, add_effect of a delete (not p) and remove_effect of an add, for
+//     a predicate that no precondition or goal uses negatively, are restricting, and so are
+//     add_init, add_effect of an add and remove_effect of a delete for a predicate none uses
+//     positively: every state reached then has fewer (more) atoms of that predicate and the
+//     same others, so a plan valid after the edits was valid before, at the same cost;
+//   - any init or effect edit of a *fresh* predicate (declared by add_predicate) is
 //     restricting: a fresh fluent is read only by added preconditions, so dropping it maps
 //     every plan of the modified model to a plan of the original one of the same cost;
-//   - remove_precondition, remove_goal, and other add_init, remove_init, add_effect and
-//     remove_effect edits are not.
+//   - remove_precondition, remove_goal, and the other init and effect edits are not.
 // "Uses" are collected over both domains, every task's goals and every modification's added
 // preconditions and goals, per model (the compilation keeps the robot's and the human's
 // fluents apart).

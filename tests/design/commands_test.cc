@@ -79,8 +79,14 @@ TEST(DesignCommand, JsonOfSettingC) {
 TEST(DesignCommand, MaxDesignSizeFromTheCommandLine) {
     auto out = run_json(
         "design " + RESTAURANT + "c-two-tasks-t10.textproto --json --max-design-size 1", 0);
-    EXPECT_LE(out["design"].size(), 1u);
-    EXPECT_EQ(out["configurations_total"], 7);
+    EXPECT_EQ(out["design"], nlohmann::json::array({"barrier-00-01"}));
+    auto every = run_json("design " + RESTAURANT +
+                              "c-two-tasks-t10.textproto --json --max-design-size 1 "
+                              "--search exhaustive",
+                          0);
+    EXPECT_EQ(every["configurations_total"], 7); // {} and the 6 single modifications
+    EXPECT_EQ(every["design"], out["design"]);
+    EXPECT_EQ(every["objective"], out["objective"]);
 }
 
 TEST(DesignCommand, ATimeLimitThatStopsTheSearchExitsFour) {
@@ -100,7 +106,9 @@ TEST(DesignCommand, PruneRelevantIsNotProvenOptimal) {
 TEST(DesignCommand, OneSummaryLineOnStderrWhenNotATerminal) {
     // stderr onto the pipe, stdout away: what a log file of a batch run would get.
     CommandResult result = run_envdesign(
-        "design " + RESTAURANT + "a-one-task-t1.textproto 3>&1 1>/dev/null 2>&3 | cat", false);
+        "design " + RESTAURANT +
+            "a-one-task-t1.textproto --search exhaustive 3>&1 1>/dev/null 2>&3 | cat",
+        false);
     EXPECT_EQ(result.exit_code, 0);
     EXPECT_EQ(result.out.rfind("design: 1 of 64 configurations evaluated", 0), 0u) << result.out;
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;

@@ -1,6 +1,8 @@
-// The search over configurations against exhaustive enumeration, on scripted evaluators
-// (no planning): bounds must never change the answer, ties follow SPEC.md, time limits
-// give "best found".
+// The exhaustive search over configurations against a written-out enumeration, on scripted
+// evaluators (no planning): bounds must never change the answer, ties follow SPEC.md, time
+// limits give "best found". Scripted answers have nothing to do with the modifications'
+// edits, so only the exhaustive search applies (the witness search reads the edits:
+// witness_search_test.cc).
 
 #include "design/design_search.h"
 
@@ -32,9 +34,10 @@ public:
     ScriptedEvaluator(Script script, long long budget = -1)
         : script_(std::move(script)), budget_(budget) {}
 
-    void evaluate(const std::vector<Configuration> &batch, const Deadline &,
+    void evaluate(const std::vector<ConfigurationEvaluation> &batch, const Deadline &,
                   const EvaluationCallbacks &callbacks) override {
-        for (const auto &configuration : batch) {
+        for (const auto &request : batch) {
+            const Configuration &configuration = request.configuration;
             auto answers = script_(configuration);
             ConfigurationEvaluation e{configuration,
                                       EvaluationStatus::COMPLETE,
@@ -62,6 +65,12 @@ private:
     EvaluatorCounters counters_;
     std::vector<Configuration> evaluated_;
 };
+
+DesignSearchOptions exhaustive_search() {
+    DesignSearchOptions options;
+    options.method = SearchMethod::EXHAUSTIVE;
+    return options;
+}
 
 DesignProblem synthetic(std::vector<double> costs, std::vector<double> probabilities,
                         ObjectiveWeights w) {
@@ -137,7 +146,7 @@ TEST_P(AgainstExhaustive, BoundsNeverChangeTheAnswer) {
     const Setting s = GetParam();
     DesignProblem p = synthetic({1, 2, 0.5, 3, 1}, {0.3, 0.7}, {1, s.beta, 0.25, 0.9, s.horizon});
     ScriptedEvaluator evaluator(landscape);
-    DesignSearchOptions options;
+    DesignSearchOptions options = exhaustive_search();
     options.max_design_size = s.max_size;
     DesignResult r = search_design(p, evaluator, options);
     Exhaustive expected = exhaustive(p, landscape, s.max_size);
@@ -161,7 +170,7 @@ TEST(DesignSearch, AnExpensiveDesignSpaceIsSkippedByTheBound) {
     // Baseline objective: IE 1 everywhere except... every IE is 1: nothing can beat {}.
     DesignProblem p = synthetic({10, 10, 10, 10}, {1}, {1, 1, 1, 1, 1});
     ScriptedEvaluator evaluator([](const Configuration &) { return std::vector{solved(1, 3)}; });
-    DesignResult r = search_design(p, evaluator, {});
+    DesignResult r = search_design(p, evaluator, exhaustive_search());
     EXPECT_TRUE(r.optimal);
     EXPECT_TRUE(r.best->ranked.configuration.empty());
     EXPECT_EQ(evaluator.evaluated().size(), 1u); // objective 4 < 1 + 10: sizes >= 1 skipped
@@ -176,7 +185,7 @@ TEST(DesignSearch, EqualDesignsGoToTheEarlierModification) {
                      std::find(c.begin(), c.end(), 2) != c.end();
         return std::vector{solved(fixed ? 1 : 100, 1)};
     });
-    DesignResult r = search_design(p, evaluator, {});
+    DesignResult r = search_design(p, evaluator, exhaustive_search());
     EXPECT_EQ(r.best->ranked.configuration, Configuration{1});
 }
 
@@ -184,7 +193,7 @@ TEST(DesignSearch, EqualObjectivesGoToTheCheaperDesign) {
     DesignProblem p = synthetic({3, 2}, {1}, {1, 0, 0, 1, 1}); // beta 0: C does not count
     ScriptedEvaluator evaluator(
         [](const Configuration &c) { return std::vector{solved(c.empty() ? 9 : 1, 1)}; });
-    DesignResult r = search_design(p, evaluator, {});
+    DesignResult r = search_design(p, evaluator, exhaustive_search());
     EXPECT_EQ(r.best->ranked.configuration, Configuration{1});
 }
 
@@ -197,7 +206,7 @@ TEST(DesignSearch, AnInfiniteBaselineIsBeatenByAnyFiniteDesign) {
         t.status = ExplicabilityStatus::INEXPLICABLE;
         return std::vector{t};
     });
-    DesignResult r = search_design(p, evaluator, {});
+    DesignResult r = search_design(p, evaluator, exhaustive_search());
     EXPECT_EQ(r.best->ranked.configuration, Configuration{1});
     EXPECT_TRUE(std::isinf(r.baseline->objective.value));
 }
@@ -205,7 +214,7 @@ TEST(DesignSearch, AnInfiniteBaselineIsBeatenByAnyFiniteDesign) {
 TEST(DesignSearch, ATimeLimitGivesTheBestFoundSoFar) {
     DesignProblem p = synthetic({1, 2, 0.5, 3, 1}, {0.3, 0.7}, {1, 0.25, 0.25, 0.9, 10});
     ScriptedEvaluator evaluator(landscape, 9); // the budget runs out during size 1
-    DesignResult r = search_design(p, evaluator, {});
+    DesignResult r = search_design(p, evaluator, exhaustive_search());
     EXPECT_FALSE(r.optimal);
     EXPECT_TRUE(r.limit_reached);
     ASSERT_TRUE(r.best);

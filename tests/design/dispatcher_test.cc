@@ -30,7 +30,7 @@ TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
         return sum > 10;
     };
     r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
-    Dispatcher d({{}, {0}}, 2, true, r.callbacks);
+    Dispatcher d({unevaluated({}), unevaluated({0})}, 2, true, r.callbacks);
     auto answer_bound = [&](Job job, double bound) { d.receive({job, bound, {}}); };
     // Both bounds of {} go out before anything else of it; {0}'s follow while they are away.
     std::vector<Job> sent;
@@ -62,7 +62,7 @@ TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
 TEST(Dispatcher, WithoutBoundsOnlyCompiledTasks) {
     Recorder r;
     r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
-    Dispatcher d({{}}, 1, false, r.callbacks);
+    Dispatcher d({unevaluated({})}, 1, false, r.callbacks);
     Job job = *d.next_job();
     EXPECT_EQ(job.kind, JobKind::EXPLICABILITY);
     d.finish_rest(); // out of time while the job is away: reported when it is back
@@ -73,5 +73,45 @@ TEST(Dispatcher, WithoutBoundsOnlyCompiledTasks) {
     EXPECT_EQ(r.done[0].status, EvaluationStatus::LIMIT);
 }
 
+// Tasks the search already knows (inherited from a smaller configuration) get no job, nor
+// does a robot bound that is known; a configuration known in full is done at once.
+TEST(Dispatcher, KnownTasksAndBoundsGetNoJob) {
+    Recorder r;
+    r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
+    TaskExplicability known;
+    known.status = ExplicabilityStatus::SOLVED;
+    known.ie = 1;
+    ConfigurationEvaluation partial = unevaluated({0});
+    partial.tasks = {known, std::nullopt, std::nullopt};
+    partial.robot_cost_bounds = {std::nullopt, 4.0, std::nullopt};
+    ConfigurationEvaluation full = unevaluated({1});
+    full.tasks = {known, known, known};
+    Dispatcher d({full, partial}, 3, true, r.callbacks);
+    std::vector<Job> sent;
+    while (auto job = d.next_job())
+        sent.push_back(*job);
+    ASSERT_EQ(r.done.size(), 1u); // {1}: everything was known
+    EXPECT_EQ(r.done[0].configuration, Configuration{1});
+    EXPECT_EQ(r.done[0].status, EvaluationStatus::COMPLETE);
+    ASSERT_EQ(sent.size(), 1u); // only task 2's robot bound; then its tasks wait for it
+    EXPECT_EQ(sent[0].kind, JobKind::ROBOT_BOUND);
+    EXPECT_EQ(sent[0].task, 2);
+    d.receive({sent[0], 5.0, {}});
+    sent.clear();
+    while (auto job = d.next_job())
+        sent.push_back(*job);
+    ASSERT_EQ(sent.size(), 2u);
+    EXPECT_EQ(sent[0].task, 1);
+    EXPECT_EQ(sent[1].task, 2);
+    for (const auto &job : sent) {
+        EXPECT_EQ(job.kind, JobKind::EXPLICABILITY);
+        d.receive({job, std::nullopt, known});
+    }
+    ASSERT_EQ(r.done.size(), 2u);
+    EXPECT_EQ(r.done[1].status, EvaluationStatus::COMPLETE);
+    EXPECT_EQ(r.done[1].robot_cost_bounds[1], 4.0);
+}
+
 } // namespace
 } // namespace envdesign::design
+

@@ -49,6 +49,7 @@ void put_counters(json &out, const envdesign::design_counters_t &c) {
     out["configurations_abandoned"] = c.configurations_abandoned;
     out["configurations_skipped"] = c.configurations_skipped;
     out["configurations_pruned"] = c.configurations_pruned;
+    out["tasks_inherited"] = c.tasks_inherited;
     out["task_evaluations"] = c.task_evaluations;
     out["cache_hits"] = c.cache_hits;
     out["groundings_skipped"] = c.groundings_skipped;
@@ -88,6 +89,9 @@ std::string result_json(const envdesign::design_result_t &r) {
     out["baseline"] = r.has_baseline ? objective_json(r.baseline) : json();
     put_counters(out, r.counters);
     out["limit_reached"] = r.limit_reached != 0;
+    if (r.has_gap)
+        out["gap"] = number(r.gap);
+    out["notes"] = r.notes;
     if (!r.change.empty()) // a re-evaluation: what changed and why
         out["change"] = r.change;
     return out.dump();
@@ -114,6 +118,10 @@ std::string result_text(const envdesign::design_result_t &r) {
             out << " " << step;
         out << "\n";
     }
+    if (r.has_gap)
+        out << "proven gap: " << shown(r.gap) << "\n";
+    for (const auto &note : r.notes)
+        out << "note: " << note << "\n";
     return out.str();
 }
 
