@@ -48,7 +48,7 @@ std::string number(double x) {
 Redesigner::Redesigner(DesignProblem problem, RedesignOptions options)
     : problem_(std::make_unique<DesignProblem>(std::move(problem))), options_(options),
       local_(std::make_unique<design::LocalEvaluator>(*problem_, options.workers, options.planner)),
-      stored_(std::make_unique<StoredEvaluator>(*problem_, *local_, store_)) {}
+      stored_(std::make_unique<design::StoredEvaluator>(*problem_, *local_, store_)) {}
 
 Distribution Redesigner::distribution() const {
     Distribution d;
@@ -90,7 +90,7 @@ void Redesigner::remove_task(const std::string &name) {
         std::find_if(tasks.begin(), tasks.end(), [&](const auto &t) { return t.name == name; });
     if (it == tasks.end())
         return;
-    store_.forget(task_key(*problem_, static_cast<int>(it - tasks.begin())));
+    store_.forget(design::task_key(*problem_, static_cast<int>(it - tasks.begin())));
     tasks.erase(it);
 }
 

@@ -23,7 +23,7 @@
 // Not thread-safe; the problem must not be changed by anything else.
 
 #include "arrivals/distribution.h"
-#include "arrivals/stored_evaluator.h"
+#include "design/stored_evaluator.h"
 #include "arrivals/tracker.h"
 #include "design/design_search.h"
 #include "design/local_evaluator.h"
@@ -85,7 +85,7 @@ public:
     Redesign redesign(const Distribution &d, const std::vector<NewTask> &new_tasks);
 
     const std::optional<design::EvaluatedDesign> &current() const { return current_; }
-    const EvaluationStore &store() const { return store_; }
+    const design::EvaluationStore &store() const { return store_; }
 
 private:
     // Parses and appends a new task; the refusal message if it cannot.
@@ -101,8 +101,8 @@ private:
     std::unique_ptr<design::DesignProblem> problem_; // stable address: the evaluators hold it
     RedesignOptions options_;
     std::unique_ptr<design::LocalEvaluator> local_;
-    EvaluationStore store_;
-    std::unique_ptr<StoredEvaluator> stored_;
+    design::EvaluationStore store_;
+    std::unique_ptr<design::StoredEvaluator> stored_;
     std::optional<design::EvaluatedDesign> current_;
 };
 

@@ -4,9 +4,9 @@
 
 namespace envdesign::cluster {
 
-std::shared_ptr<arrivals::EvaluationStore>
+std::shared_ptr<design::EvaluationStore>
 EvaluationStores::store_for(const design::DesignProblem &problem, int heuristic) {
-    Key key = design::key_of_text(arrivals::store_key(problem).hex() + " heuristic " +
+    Key key = design::key_of_text(design::store_key(problem).hex() + " heuristic " +
                                   std::to_string(heuristic));
     std::lock_guard lock(mutex_);
     auto it = stores_.find(key);
@@ -15,7 +15,7 @@ EvaluationStores::store_for(const design::DesignProblem &problem, int heuristic)
         return it->second.first;
     }
     recent_.push_front(key);
-    auto store = std::make_shared<arrivals::EvaluationStore>();
+    auto store = std::make_shared<design::EvaluationStore>();
     stores_.emplace(key, std::make_pair(store, recent_.begin()));
     return store;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The coordinator's task evaluations, kept across requests (arrivals/evaluation_store.h):
+// The coordinator's task evaluations, kept across requests (design/evaluation_store.h):
 // one EvaluationStore per store key, so that a request that differs from an earlier one only
 // in its task distribution, its weights or added tasks (what envdesign-bridge sends when the
 // distribution drifts) is a re-weighting of what the planners answered before, not a
@@ -8,7 +8,7 @@
 // those a running search holds (it would keep filling a store nobody finds again).
 // Thread-safe.
 
-#include "arrivals/evaluation_store.h"
+#include "design/evaluation_store.h"
 
 #include <cstddef>
 #include <list>
@@ -25,7 +25,7 @@ public:
     // The store of `problem`'s store key searched with `heuristic` (it picks among plans of
     // equal cost, so its plans are its own), made if new; it stays valid for the caller
     // while held even if dropped here.
-    std::shared_ptr<arrivals::EvaluationStore> store_for(const design::DesignProblem &problem,
+    std::shared_ptr<design::EvaluationStore> store_for(const design::DesignProblem &problem,
                                                          int heuristic);
     // Drops stores nobody holds (least recently used first) until the rest hold at most
     // max_records.
@@ -33,11 +33,11 @@ public:
     std::size_t stores() const;
 
 private:
-    using Key = arrivals::TaskKey;
+    using Key = design::TaskKey;
     std::size_t max_records_;
     mutable std::mutex mutex_;
     std::list<Key> recent_; // most recently used first
-    std::map<Key, std::pair<std::shared_ptr<arrivals::EvaluationStore>, std::list<Key>::iterator>>
+    std::map<Key, std::pair<std::shared_ptr<design::EvaluationStore>, std::list<Key>::iterator>>
         stores_;
 };
 

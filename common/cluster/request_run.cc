@@ -1,6 +1,6 @@
 #include "cluster/request_run.h"
 
-#include "arrivals/stored_evaluator.h"
+#include "design/stored_evaluator.h"
 #include "bus/channels.h"
 #include "bus/codec.h"
 #include "bus/log.h"
@@ -122,9 +122,9 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     };
     // Evaluations do not depend on D or the weights: those an earlier request with the same
     // models and modifications made are re-weighted, not re-planned.
-    std::shared_ptr<arrivals::EvaluationStore> store =
+    std::shared_ptr<design::EvaluationStore> store =
         context_.stores ? context_.stores->store_for(problem, request_.heuristic) : nullptr;
-    std::optional<arrivals::StoredEvaluator> stored;
+    std::optional<design::StoredEvaluator> stored;
     if (store)
         stored.emplace(problem, evaluator, *store);
     design::Evaluator &searched = stored ? static_cast<design::Evaluator &>(*stored) : evaluator;

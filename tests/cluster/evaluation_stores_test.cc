@@ -41,17 +41,17 @@ TEST_F(EvaluationStoresTest, SameModelsShareAStoreWhateverTheDistribution) {
 
 TEST_F(EvaluationStoresTest, TrimDropsTheLeastRecentlyUsed) {
     EvaluationStores stores(4);
-    auto key = arrivals::task_key(restaurant, 0);
+    auto key = design::task_key(restaurant, 0);
     auto first = stores.store_for(restaurant, 0);
     first->keep({0}, key, solved(1));
     first->keep({1}, key, solved(2));
     first->keep_robot_bound({2}, key, 9); // bounds count too
     auto second = stores.store_for(blocks, 0);
-    second->keep({0}, arrivals::task_key(blocks, 0), solved(3));
+    second->keep({0}, design::task_key(blocks, 0), solved(3));
     stores.trim();
     EXPECT_EQ(stores.stores(), 2u);  // 4 records: nothing to drop
     stores.store_for(restaurant, 0); // the restaurant is now the most recent
-    second->keep({1}, arrivals::task_key(blocks, 0), solved(4));
+    second->keep({1}, design::task_key(blocks, 0), solved(4));
     stores.trim(); // 5 records, but searches still hold both stores
     EXPECT_EQ(stores.stores(), 2u);
     second.reset(); // that search ended

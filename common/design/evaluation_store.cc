@@ -1,15 +1,15 @@
-#include "arrivals/evaluation_store.h"
+#include "design/evaluation_store.h"
 
 #include "design/lifted_key.h"
 
 #include <sstream>
 
-namespace envdesign::arrivals {
+namespace envdesign::design {
 
-TaskKey store_key(const design::DesignProblem &problem) {
+TaskKey store_key(const DesignProblem &problem) {
     std::ostringstream text;
-    text << design::lifted_key(problem.robot_domain, {}).hex() << ' '
-         << design::lifted_key(problem.human_domain, {}).hex() << ' '
+    text << lifted_key(problem.robot_domain, {}).hex() << ' '
+         << lifted_key(problem.human_domain, {}).hex() << ' '
          << static_cast<int>(problem.weights.distance) << '\n';
     for (const auto &m : problem.modifications) {
         text << m.edits.size() << ':';
@@ -18,17 +18,17 @@ TaskKey store_key(const design::DesignProblem &problem) {
                  << e.action.size() << '#' << e.action << ',' << e.expression.to_string() << ';';
         text << '\n';
     }
-    return design::key_of_text(text.str());
+    return key_of_text(text.str());
 }
 
-TaskKey task_key(const design::DesignProblem &problem, int task) {
-    const design::DesignTask &t = problem.tasks[task];
-    return design::key_of_text(design::lifted_key(problem.robot_domain, t.robot_problem).hex() +
-                               design::lifted_key(problem.human_domain, t.human_problem).hex());
+TaskKey task_key(const DesignProblem &problem, int task) {
+    const DesignTask &t = problem.tasks[task];
+    return key_of_text(lifted_key(problem.robot_domain, t.robot_problem).hex() +
+                               lifted_key(problem.human_domain, t.human_problem).hex());
 }
 
-std::optional<design::TaskExplicability>
-EvaluationStore::find(const design::Configuration &configuration, const TaskKey &task) const {
+std::optional<TaskExplicability>
+EvaluationStore::find(const Configuration &configuration, const TaskKey &task) const {
     std::lock_guard lock(mutex_);
     auto it = entries_.find({configuration, task});
     if (it == entries_.end())
@@ -36,15 +36,15 @@ EvaluationStore::find(const design::Configuration &configuration, const TaskKey 
     return it->second;
 }
 
-void EvaluationStore::keep(const design::Configuration &configuration, const TaskKey &task,
-                           const design::TaskExplicability &evaluation) {
-    if (evaluation.status == design::ExplicabilityStatus::LIMIT)
+void EvaluationStore::keep(const Configuration &configuration, const TaskKey &task,
+                           const TaskExplicability &evaluation) {
+    if (evaluation.status == ExplicabilityStatus::LIMIT)
         return;
     std::lock_guard lock(mutex_);
     entries_.insert_or_assign({configuration, task}, evaluation);
 }
 
-std::optional<double> EvaluationStore::find_robot_bound(const design::Configuration &configuration,
+std::optional<double> EvaluationStore::find_robot_bound(const Configuration &configuration,
                                                         const TaskKey &task) const {
     std::lock_guard lock(mutex_);
     auto it = robot_bounds_.find({configuration, task});
@@ -53,7 +53,7 @@ std::optional<double> EvaluationStore::find_robot_bound(const design::Configurat
     return it->second;
 }
 
-void EvaluationStore::keep_robot_bound(const design::Configuration &configuration,
+void EvaluationStore::keep_robot_bound(const Configuration &configuration,
                                        const TaskKey &task, double bound) {
     std::lock_guard lock(mutex_);
     robot_bounds_.insert_or_assign({configuration, task}, bound);
@@ -75,4 +75,4 @@ std::size_t EvaluationStore::records() const {
     return entries_.size() + robot_bounds_.size();
 }
 
-} // namespace envdesign::arrivals
+} // namespace envdesign::design

@@ -25,25 +25,24 @@
 #include <optional>
 #include <utility>
 
-namespace envdesign::arrivals {
+namespace envdesign::design {
 
-using design::TaskKey;
 
-TaskKey store_key(const design::DesignProblem &problem);
-TaskKey task_key(const design::DesignProblem &problem, int task);
+TaskKey store_key(const DesignProblem &problem);
+TaskKey task_key(const DesignProblem &problem, int task);
 
 class EvaluationStore {
 public:
-    std::optional<design::TaskExplicability> find(const design::Configuration &configuration,
+    std::optional<TaskExplicability> find(const Configuration &configuration,
                                                   const TaskKey &task) const;
     // Keeps SOLVED and INEXPLICABLE answers; LIMIT says nothing and is not kept.
-    void keep(const design::Configuration &configuration, const TaskKey &task,
-              const design::TaskExplicability &evaluation);
+    void keep(const Configuration &configuration, const TaskKey &task,
+              const TaskExplicability &evaluation);
     // The robot's optimal cost under a configuration (a lower bound the search uses to
     // abandon configurations early; INF: the robot has no plan).
-    std::optional<double> find_robot_bound(const design::Configuration &configuration,
+    std::optional<double> find_robot_bound(const Configuration &configuration,
                                            const TaskKey &task) const;
-    void keep_robot_bound(const design::Configuration &configuration, const TaskKey &task,
+    void keep_robot_bound(const Configuration &configuration, const TaskKey &task,
                           double bound);
     // Forgets every evaluation and bound of one task.
     void forget(const TaskKey &task);
@@ -52,8 +51,8 @@ public:
 
 private:
     mutable std::mutex mutex_;
-    std::map<std::pair<design::Configuration, TaskKey>, design::TaskExplicability> entries_;
-    std::map<std::pair<design::Configuration, TaskKey>, double> robot_bounds_;
+    std::map<std::pair<Configuration, TaskKey>, TaskExplicability> entries_;
+    std::map<std::pair<Configuration, TaskKey>, double> robot_bounds_;
 };
 
-} // namespace envdesign::arrivals
+} // namespace envdesign::design

@@ -1,12 +1,11 @@
-#include "arrivals/stored_evaluator.h"
+#include "design/stored_evaluator.h"
 
 #include <map>
 
-namespace envdesign::arrivals {
+namespace envdesign::design {
 
-using design::ConfigurationEvaluation;
 
-StoredEvaluator::StoredEvaluator(const design::DesignProblem &problem, design::Evaluator &inner,
+StoredEvaluator::StoredEvaluator(const DesignProblem &problem, Evaluator &inner,
                                  EvaluationStore &store)
     : problem_(problem), inner_(inner), store_(store) {}
 
@@ -21,8 +20,8 @@ const TaskKey &StoredEvaluator::key(int task) {
     return key;
 }
 
-std::optional<design::TaskExplicability>
-StoredEvaluator::find(const design::Configuration &configuration, int task) {
+std::optional<TaskExplicability>
+StoredEvaluator::find(const Configuration &configuration, int task) {
     return store_.find(configuration, key(task));
 }
 
@@ -33,14 +32,14 @@ ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluatio
     int tasks = static_cast<int>(problem_.tasks.size());
     e.tasks.resize(tasks);
     e.robot_cost_bounds.resize(tasks);
-    e.status = design::EvaluationStatus::COMPLETE;
+    e.status = EvaluationStatus::COMPLETE;
     for (int t = 0; t < tasks; ++t) {
         if (!e.tasks[t])
             e.tasks[t] = find(e.configuration, t);
         if (!e.tasks[t] && !e.robot_cost_bounds[t])
             e.robot_cost_bounds[t] = store_.find_robot_bound(e.configuration, key(t));
         if (!e.tasks[t])
-            e.status = design::EvaluationStatus::LIMIT; // not complete
+            e.status = EvaluationStatus::LIMIT; // not complete
     }
     return e;
 }
@@ -62,14 +61,14 @@ void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation,
 }
 
 void StoredEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
-                               const design::Deadline &deadline,
-                               const design::EvaluationCallbacks &callbacks) {
+                               const Deadline &deadline,
+                               const EvaluationCallbacks &callbacks) {
     // Complete ones first: they may lower the best objective the partial ones are judged by.
     std::vector<ConfigurationEvaluation> partial;
     std::vector<const ConfigurationEvaluation *> requests;
     for (const auto &request : batch) {
         ConfigurationEvaluation known = from_store(request);
-        if (known.status != design::EvaluationStatus::COMPLETE) {
+        if (known.status != EvaluationStatus::COMPLETE) {
             partial.push_back(std::move(known));
             requests.push_back(&request);
             continue;
@@ -78,7 +77,7 @@ void StoredEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch
         callbacks.done(std::move(known));
     }
     std::vector<ConfigurationEvaluation> missing;
-    std::map<design::Configuration, const ConfigurationEvaluation *> request_of;
+    std::map<Configuration, const ConfigurationEvaluation *> request_of;
     for (std::size_t i = 0; i < partial.size(); ++i) {
         auto &known = partial[i];
         if (!callbacks.abandon || !callbacks.abandon(known)) {
@@ -86,13 +85,13 @@ void StoredEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch
             missing.push_back(std::move(known));
             continue;
         }
-        known.status = design::EvaluationStatus::CUT_OFF;
+        known.status = EvaluationStatus::CUT_OFF;
         ++stored_answers_;
         callbacks.done(std::move(known));
     }
     if (missing.empty())
         return;
-    design::EvaluationCallbacks keeping;
+    EvaluationCallbacks keeping;
     keeping.abandon = callbacks.abandon;
     keeping.done = [&](ConfigurationEvaluation evaluation) {
         keep(evaluation, *request_of.at(evaluation.configuration));
@@ -101,4 +100,4 @@ void StoredEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch
     inner_.evaluate(missing, deadline, keeping);
 }
 
-} // namespace envdesign::arrivals
+} // namespace envdesign::design

@@ -1,6 +1,6 @@
 // The evaluation store: content keys, and a search answered from it.
 
-#include "arrivals/stored_evaluator.h"
+#include "design/stored_evaluator.h"
 
 #include "design/design_search.h"
 #include "design/design_spec.h"
@@ -8,16 +8,16 @@
 
 #include <gtest/gtest.h>
 
-namespace envdesign::arrivals {
+namespace envdesign::design {
 namespace {
 
-const std::string SPEC = std::string(ENVDESIGN_ARRIVALS_DATA) + "/restaurant-drift.textproto";
+const std::string SPEC = std::string(ENVDESIGN_TEST_DATA) + "/../arrivals/data/restaurant-drift.textproto";
 
 // Probabilities, task names and the objective's weights do not change what an evaluation
 // is; the models, the modifications' edits and the distance do.
 TEST(StoreKey, IgnoresWhatOnlyWeighs) {
-    design::DesignProblem a = design::load_design_problem(SPEC);
-    design::DesignProblem b = a;
+    DesignProblem a = load_design_problem(SPEC);
+    DesignProblem b = a;
     b.tasks[0].probability = 0.2;
     b.tasks[0].name = "renamed";
     b.weights.alpha = 7;
@@ -29,10 +29,10 @@ TEST(StoreKey, IgnoresWhatOnlyWeighs) {
     EXPECT_EQ(task_key(a, 0), task_key(b, 0));
     EXPECT_FALSE(task_key(a, 0) == task_key(a, 1));
 
-    design::DesignProblem c = a;
-    c.weights.distance = design::Distance::COST_DIFF;
+    DesignProblem c = a;
+    c.weights.distance = Distance::COST_DIFF;
     EXPECT_FALSE(store_key(a) == store_key(c));
-    design::DesignProblem d = a;
+    DesignProblem d = a;
     std::swap(d.modifications[0], d.modifications[1]); // indices mean other edits
     EXPECT_FALSE(store_key(a) == store_key(d));
 }
@@ -40,20 +40,20 @@ TEST(StoreKey, IgnoresWhatOnlyWeighs) {
 // A second problem with the same content (a task renamed, other weights) searched with a
 // fresh LocalEvaluator but the first one's store: no planner run, no task evaluated.
 TEST(StoredEvaluator, AnswersFromAnotherSearchesStore) {
-    design::DesignProblem a = design::load_design_problem(SPEC);
+    DesignProblem a = load_design_problem(SPEC);
     EvaluationStore store;
-    design::LocalEvaluator local_a(a, 1);
+    LocalEvaluator local_a(a, 1);
     StoredEvaluator stored_a(a, local_a, store);
-    design::DesignResult first = design::search_design(a, stored_a, {});
+    DesignResult first = search_design(a, stored_a, {});
     EXPECT_GT(first.counters.evaluator.planner_runs, 0);
     EXPECT_GT(store.size(), 0u);
     EXPECT_EQ(stored_a.stored_answers(), 0);
 
-    design::DesignProblem b = a;
+    DesignProblem b = a;
     b.tasks[1].name = "serve-booth-2";
-    design::LocalEvaluator local_b(b, 1);
+    LocalEvaluator local_b(b, 1);
     StoredEvaluator stored_b(b, local_b, store);
-    design::DesignResult second = design::search_design(b, stored_b, {});
+    DesignResult second = search_design(b, stored_b, {});
     EXPECT_EQ(second.counters.evaluator.planner_runs, 0);
     EXPECT_EQ(second.counters.evaluator.task_evaluations, 0);
     EXPECT_EQ(second.best->ranked.configuration, first.best->ranked.configuration);
@@ -64,11 +64,11 @@ TEST(StoredEvaluator, AnswersFromAnotherSearchesStore) {
 // LIMIT answers say nothing and are not kept.
 TEST(EvaluationStore, KeepsOnlyAnswers) {
     EvaluationStore store;
-    design::TaskExplicability limit; // status LIMIT by default
+    TaskExplicability limit; // status LIMIT by default
     store.keep({0}, {1, 2}, limit);
     EXPECT_EQ(store.size(), 0u);
-    design::TaskExplicability solved;
-    solved.status = design::ExplicabilityStatus::SOLVED;
+    TaskExplicability solved;
+    solved.status = ExplicabilityStatus::SOLVED;
     solved.ie = 1;
     store.keep({0}, {1, 2}, solved);
     ASSERT_TRUE(store.find({0}, {1, 2}));
@@ -79,4 +79,4 @@ TEST(EvaluationStore, KeepsOnlyAnswers) {
 }
 
 } // namespace
-} // namespace envdesign::arrivals
+} // namespace envdesign::design

@@ -20,7 +20,7 @@
 // in place: a task's key is computed once and found again by its name. evaluate() runs on one
 // thread at a time, as the Evaluator interface says.
 
-#include "arrivals/evaluation_store.h"
+#include "design/evaluation_store.h"
 #include "design/design_problem.h"
 #include "design/evaluator.h"
 
@@ -28,23 +28,23 @@
 #include <utility>
 #include <vector>
 
-namespace envdesign::arrivals {
+namespace envdesign::design {
 
-class StoredEvaluator : public design::Evaluator {
+class StoredEvaluator : public Evaluator {
 public:
     // All three must outlive the evaluator; `store` must be the one for
     // store_key(problem).
-    StoredEvaluator(const design::DesignProblem &problem, design::Evaluator &inner,
+    StoredEvaluator(const DesignProblem &problem, Evaluator &inner,
                     EvaluationStore &store);
 
-    void evaluate(const std::vector<design::ConfigurationEvaluation> &batch,
-                  const design::Deadline &deadline,
-                  const design::EvaluationCallbacks &callbacks) override;
+    void evaluate(const std::vector<ConfigurationEvaluation> &batch,
+                  const Deadline &deadline,
+                  const EvaluationCallbacks &callbacks) override;
     // The inner evaluator's counters: configurations answered from the store add nothing.
-    design::EvaluatorCounters counters() const override { return inner_.counters(); }
+    EvaluatorCounters counters() const override { return inner_.counters(); }
 
     // The stored evaluation of task index `task` under `configuration`.
-    std::optional<design::TaskExplicability> find(const design::Configuration &configuration,
+    std::optional<TaskExplicability> find(const Configuration &configuration,
                                                   int task);
     // Configurations answered from the store (complete, or abandoned on stored knowledge).
     long long stored_answers() const { return stored_answers_; }
@@ -52,15 +52,15 @@ public:
 private:
     const TaskKey &key(int task);
     // What the store knows of `configuration` (status COMPLETE when every task is known).
-    design::ConfigurationEvaluation from_store(const design::ConfigurationEvaluation &request);
-    void keep(const design::ConfigurationEvaluation &evaluation,
-              const design::ConfigurationEvaluation &request);
+    ConfigurationEvaluation from_store(const ConfigurationEvaluation &request);
+    void keep(const ConfigurationEvaluation &evaluation,
+              const ConfigurationEvaluation &request);
 
-    const design::DesignProblem &problem_;
-    design::Evaluator &inner_;
+    const DesignProblem &problem_;
+    Evaluator &inner_;
     EvaluationStore &store_;
     std::vector<std::pair<std::string, TaskKey>> task_keys_; // by task index: name, key
     long long stored_answers_ = 0;
 };
 
-} // namespace envdesign::arrivals
+} // namespace envdesign::design
