@@ -130,6 +130,8 @@ private:
         std::vector<ConfigurationEvaluation> requests;
         std::map<Configuration, std::size_t> position;
         for (std::size_t i = 0; i < batch.size(); ++i) {
+            if (blind(batch[i]))
+                grow(batch[i]);
             ConfigurationEvaluation r = unevaluated(batch[i].configuration);
             r.robot_cost_bounds = batch[i].robot_bounds;
             for (const auto &record : batch[i].tasks)
@@ -140,6 +142,14 @@ private:
         EvaluationCallbacks callbacks;
         callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
             const Node &node = batch[position.at(partial.configuration)];
+            if (blind(node)) { // grown already: only its own objective matters
+                std::vector<const TaskExplicability *> tasks;
+                for (const auto &t : partial.tasks)
+                    tasks.push_back(t ? &*t : nullptr);
+                return !can_win(objective_lower_bound(problem_, node.cost, tasks,
+                                                      partial.robot_cost_bounds),
+                                node.configuration.size());
+            }
             Node known = node; // what the answers so far add; their witnesses are not read yet
             for (int t = 0; t < tasks_; ++t)
                 if (!known.robot_bounds[t] && t < static_cast<int>(partial.robot_cost_bounds.size()))
@@ -184,8 +194,10 @@ private:
             evaluations.push_back(node.tasks[t]->evaluation);
         }
         consider_design(problem_, node.configuration, std::move(evaluations), result_);
-        node.bound = bound(node);
-        grow(node);
+        if (!blind(node)) {
+            node.bound = bound(node);
+            grow(node);
+        }
         report();
     }
 
@@ -206,7 +218,7 @@ private:
                        node.cost + problem_.modifications[m].cost, 0};
             for (int t = 0; t < tasks_; ++t) {
                 const Record &r = node.tasks[t];
-                if (!k.restricting || !r->witnesses_known || contains(r->touching, m))
+                if (!r || !k.restricting || !r->witnesses_known || contains(r->touching, m))
                     child.tasks[t] = nullptr;
                 if (k.edits_robot)
                     child.robot_bounds[t].reset();
@@ -219,6 +231,16 @@ private:
         }
     }
 
+    // When every modification outside `node` is added everywhere anyway, its witnesses do not
+    // say what to add: it is grown before it is evaluated, and its evaluation may be
+    // abandoned as soon as the configuration itself cannot win (as in the exhaustive search).
+    bool blind(const Node &node) const {
+        std::size_t outside = 0;
+        for (int m : always_)
+            outside += contains(node.configuration, m) ? 0 : 1;
+        return outside + node.configuration.size() == static_cast<std::size_t>(index_.size());
+    }
+
     // The modifications that can change a task of `node` (or are added everywhere).
     std::vector<int> candidates(const Node &node) const {
         std::set<int> out(always_.begin(), always_.end());
@@ -226,7 +248,7 @@ private:
             if (problem_.tasks[t].probability <= 0)
                 continue;
             const Record &r = node.tasks[t];
-            if (!r->witnesses_known) {
+            if (!r || !r->witnesses_known) {
                 for (int m = 0; m < index_.size(); ++m)
                     out.insert(m);
                 break;
