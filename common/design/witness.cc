@@ -1,6 +1,7 @@
 #include "design/witness.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -10,10 +11,18 @@ namespace {
 enum Side { ROBOT, HUMAN };
 const char *const kPrefix[] = {"R|", "H|"};
 
-// How a model's predicates are read: positively, negatively (preconditions and goals), and
-// which are fresh (declared by a modification).
+// How a model's predicates are read: positively, negatively (preconditions and goals);
+// which are fresh (declared by a modification), and which modifications mention each.
 struct Uses {
     std::set<std::string> positive, negative, fresh;
+    std::map<std::string, std::set<int>> mentioned_by;
+
+    // Fresh and mentioned by one modification only: whatever it does with the predicate is
+    // read by its own added preconditions alone.
+    bool private_fresh(const std::string &predicate) const {
+        auto it = mentioned_by.find(predicate);
+        return fresh.count(predicate) && it != mentioned_by.end() && it->second.size() == 1;
+    }
 
     void add(const pddl::Literal &l) {
         (l.negated ? negative : positive).insert(l.atom.predicate);
@@ -95,9 +104,11 @@ TouchIndex::TouchIndex(const DesignProblem &problem) {
             for (const auto &l : (side == ROBOT ? task.robot_problem : task.human_problem).goal)
                 uses[side].add(l);
     }
-    for (const auto &m : problem.modifications) {
-        for (const auto &edit : m.edits) {
+    for (int i = 0; i < static_cast<int>(problem.modifications.size()); ++i) {
+        for (const auto &edit : problem.modifications[i].edits) {
             for (Side side : sides(edit.model)) {
+                if (edit.kind != EditKind::REMOVE_ACTION)
+                    uses[side].mentioned_by[literal_of(edit.expression).predicate].insert(i);
                 if (edit.kind == EditKind::ADD_PRECONDITION || edit.kind == EditKind::ADD_GOAL) {
                     SpecLiteral l = literal_of(edit.expression);
                     (l.negated ? uses[side].negative : uses[side].positive).insert(l.predicate);
@@ -118,7 +129,7 @@ TouchIndex::TouchIndex(const DesignProblem &problem) {
             for (Side side : sides(edit.model)) {
                 const Uses &u = uses[side];
                 SpecLiteral l = literal_of(edit.expression);
-                bool fresh = u.fresh.count(l.predicate) > 0;
+                bool fresh = u.private_fresh(l.predicate);
                 bool restricting = true;
                 std::string schema = kPrefix[side] + std::string("schema|") + edit.action;
                 switch (edit.kind) {
@@ -218,11 +229,28 @@ std::vector<int> TouchIndex::touching(const ModelPair &models, const TaskExplica
     add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, *evaluation.human_plan,
              out, known);
     out.insert(out.end(), every_robot_witness_.begin(), every_robot_witness_.end());
-    out.insert(out.end(), every_human_witness_.begin(), every_human_witness_.end());
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    std::erase_if(out, [&](int m) { return !classes_[m].restricting; });
-    return out;
+    return restricting_only(std::move(out));
+}
+
+std::optional<std::vector<int>>
+TouchIndex::touching_human_plan(const ModelPair &models,
+                                const std::vector<std::string> &plan) const {
+    std::vector<int> out;
+    bool known = true;
+    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, plan, out, known);
+    if (!known)
+        return std::nullopt;
+    return restricting_only(std::move(out));
+}
+
+// Sorted, unique, restricting, with the add_goal modifications of the human's model (they
+// touch every witness).
+std::vector<int> TouchIndex::restricting_only(std::vector<int> mods) const {
+    mods.insert(mods.end(), every_human_witness_.begin(), every_human_witness_.end());
+    std::sort(mods.begin(), mods.end());
+    mods.erase(std::unique(mods.begin(), mods.end()), mods.end());
+    std::erase_if(mods, [&](int m) { return !classes_[m].restricting; });
+    return mods;
 }
 
 } // namespace envdesign::design

@@ -12,9 +12,12 @@
 //     add_init, add_effect of an add and remove_effect of a delete for a predicate none uses
 //     positively: every state reached then has fewer (more) atoms of that predicate and the
 //     same others, so a plan valid after the edits was valid before, at the same cost;
-//   - any init or effect edit of a *fresh* predicate (declared by add_predicate) is
-//     restricting: a fresh fluent is read only by added preconditions, so dropping it maps
-//     every plan of the modified model to a plan of the original one of the same cost;
+//   - any init or effect edit of a *private fresh* predicate (declared by add_predicate and
+//     mentioned by no other modification) is restricting: that fluent is read only by the
+//     modification's own added preconditions, so dropping it maps every plan of the modified
+//     model to a plan of the model without the modification, at the same cost. A fresh
+//     predicate that several modifications mention follows the rules above (one may add
+//     the atoms another one's precondition needs);
 //   - remove_precondition, remove_goal, and the other init and effect edits are not.
 // "Uses" are collected over both domains, every task's goals and every modification's added
 // preconditions and goals, per model (the compilation keeps the robot's and the human's
@@ -30,6 +33,7 @@
 #include "design/configuration.h"
 #include "design/task_evaluation.h"
 
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -56,12 +60,17 @@ public:
     // that every modification touches it.
     std::vector<int> touching(const ModelPair &models, const TaskExplicability &evaluation,
                               bool &known) const;
+    // The restricting modifications that touch `plan` as a plan of the human's model under
+    // `models`; nullopt if a step is not an action of that model.
+    std::optional<std::vector<int>> touching_human_plan(const ModelPair &models,
+                                                        const std::vector<std::string> &plan) const;
 
 private:
     void add_keys(const std::string &prefix, const pddl::Domain &domain,
                   const pddl::Problem &problem, const std::vector<std::string> &plan,
                   std::vector<int> &out, bool &known) const;
     void add_key(const std::string &key, std::vector<int> &out) const;
+    std::vector<int> restricting_only(std::vector<int> mods) const;
 
     std::vector<ModificationClass> classes_;
     std::unordered_map<std::string, std::vector<int>> by_key_; // touch key -> modifications

@@ -9,6 +9,7 @@
 #include <memory>
 #include <queue>
 #include <set>
+#include <tuple>
 
 namespace envdesign::design {
 namespace {
@@ -25,8 +26,24 @@ struct Node {
     Configuration configuration;
     std::vector<Record> tasks;                       // null: to be evaluated
     std::vector<std::optional<double>> robot_bounds; // c_R* under this configuration
-    double cost = 0;                                 // C(xi)
+    // Per task, a lower bound on c_H(pi) here and in every superset made by restricting
+    // modifications (the optimum of P_mod only rises when plans are removed); 0: none.
+    std::vector<double> explicable_floor;
+    double cost = 0;  // C(xi)
     double bound = 0; // on the objective of this configuration and of every superset
+};
+
+// A plan known to be valid in the human's model of some configuration xi: valid in every
+// configuration that keeps xi's everywhere-added modifications (`needs`) and adds none of
+// `breakers` (the restricting ones that touch it, and the everywhere-added ones outside xi).
+// So the human's optimal cost there is at most `cost`.
+struct PooledPlan {
+    double cost = 0;
+    std::vector<int> breakers;
+    std::vector<int> needs;
+    bool operator<(const PooledPlan &o) const {
+        return std::tie(cost, breakers, needs) < std::tie(o.cost, o.breakers, o.needs);
+    }
 };
 
 // Least bound first; then the order in which SPEC.md breaks ties.
@@ -52,7 +69,7 @@ public:
                   const DesignSearchOptions &options,
                   const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          index_(problem), tasks_(static_cast<int>(problem.tasks.size())) {
+          index_(problem), tasks_(static_cast<int>(problem.tasks.size())), pool_(tasks_) {
         const double beta = problem.weights.beta;
         for (int m = 0; m < index_.size(); ++m) {
             const ModificationClass &c = index_.of(m);
@@ -76,7 +93,8 @@ public:
 
     DesignResult run() {
         auto start = std::chrono::steady_clock::now();
-        Node root{{}, std::vector<Record>(tasks_), std::vector<std::optional<double>>(tasks_)};
+        Node root{{}, std::vector<Record>(tasks_), std::vector<std::optional<double>>(tasks_),
+                  std::vector<double>(tasks_, 0.0)};
         root.bound = bound(root);
         visited_.insert(root.configuration);
         ++generated_;
@@ -116,6 +134,12 @@ private:
             }
             Node node = open_.top();
             open_.pop();
+            double now = bound(node); // plans learnt since it was queued may raise it
+            if (clearly_greater(now, node.bound)) {
+                node.bound = now;
+                open_.push(std::move(node));
+                continue;
+            }
             if (can_win(node.bound, node.configuration.size()))
                 batch.push_back(std::move(node));
             else
@@ -151,9 +175,12 @@ private:
                                 node.configuration.size());
             }
             Node known = node; // what the answers so far add; their witnesses are not read yet
-            for (int t = 0; t < tasks_; ++t)
+            for (int t = 0; t < tasks_; ++t) {
                 if (!known.robot_bounds[t] && t < static_cast<int>(partial.robot_cost_bounds.size()))
                     known.robot_bounds[t] = partial.robot_cost_bounds[t];
+                if (t < static_cast<int>(partial.tasks.size()) && partial.tasks[t])
+                    raise_floor(known, t, *partial.tasks[t]);
+            }
             return !can_win(bound(known), node.configuration.size());
         };
         callbacks.done = [&](ConfigurationEvaluation e) {
@@ -187,10 +214,12 @@ private:
                 ModelPair models = configured_models(problem_, node.configuration, t);
                 record->touching =
                     index_.touching(models, record->evaluation, record->witnesses_known);
+                learn_plans(node.configuration, t, models, record->evaluation);
                 node.tasks[t] = std::move(record);
             }
             if (!node.robot_bounds[t] && t < static_cast<int>(e.robot_cost_bounds.size()))
                 node.robot_bounds[t] = e.robot_cost_bounds[t];
+            raise_floor(node, t, node.tasks[t]->evaluation);
             evaluations.push_back(node.tasks[t]->evaluation);
         }
         consider_design(problem_, node.configuration, std::move(evaluations), result_);
@@ -215,13 +244,15 @@ private:
             ++generated_;
             const ModificationClass &k = index_.of(m);
             Node child{std::move(child_configuration), node.tasks, node.robot_bounds,
-                       node.cost + problem_.modifications[m].cost, 0};
+                       node.explicable_floor, node.cost + problem_.modifications[m].cost, 0};
             for (int t = 0; t < tasks_; ++t) {
                 const Record &r = node.tasks[t];
                 if (!r || !k.restricting || !r->witnesses_known || contains(r->touching, m))
                     child.tasks[t] = nullptr;
                 if (k.edits_robot)
                     child.robot_bounds[t].reset();
+                if (!k.restricting)
+                    child.explicable_floor[t] = 0;
             }
             child.bound = bound(child);
             if (can_win(child.bound, child.configuration.size()))
@@ -229,6 +260,40 @@ private:
             else
                 skip(1);
         }
+    }
+
+    static void raise_floor(Node &node, int t, const TaskExplicability &e) {
+        if (e.status == ExplicabilityStatus::SOLVED)
+            node.explicable_floor[t] = std::max(node.explicable_floor[t], e.human_plan_cost);
+    }
+
+    // Keeps both witnesses of a new evaluation as plans of the human's model (a most
+    // explicable plan is one too, at its human cost).
+    void learn_plans(const Configuration &c, int t, const ModelPair &models,
+                     const TaskExplicability &e) {
+        if (e.status != ExplicabilityStatus::SOLVED || !e.human_plan || !e.human_optimal_cost)
+            return;
+        std::vector<int> needs;
+        for (int m : always_)
+            if (contains(c, m))
+                needs.push_back(m);
+        auto keep = [&](const std::vector<std::string> &plan, double cost) {
+            auto touching = index_.touching_human_plan(models, plan);
+            if (!touching)
+                return;
+            PooledPlan p{cost, {}, needs};
+            for (int m : *touching)
+                if (!contains(c, m))
+                    p.breakers.push_back(m);
+            for (int m : always_)
+                if (!contains(c, m))
+                    p.breakers.push_back(m);
+            std::sort(p.breakers.begin(), p.breakers.end());
+            p.breakers.erase(std::unique(p.breakers.begin(), p.breakers.end()), p.breakers.end());
+            pool_[t].insert(std::move(p));
+        };
+        keep(*e.human_plan, *e.human_optimal_cost);
+        keep(e.plan, e.human_plan_cost);
     }
 
     // When every modification outside `node` is added everywhere anyway, its witnesses do not
@@ -264,6 +329,94 @@ private:
 
     // A lower bound on the objective of `node`'s configuration and of every superset.
     double bound(const Node &node) const {
+        const Configuration &c = node.configuration;
+        bool always_outside =
+            std::any_of(always_.begin(), always_.end(), [&](int m) { return !contains(c, m); });
+        return always_outside ? open_bound(node) : restricted_bound(node);
+    }
+
+    // Every modification outside the node is restricting, of non-negative weighted cost: a
+    // task keeps its value unless a touching modification is added, c_H(pi) never drops, and
+    // the human's optimum is at most the cost of any known plan still valid. To bring it
+    // above the k-th cheapest such plan, every cheaper one must be broken; the costs of the
+    // modifications that do it are shared among the tasks they can change.
+    double restricted_bound(const Node &node) const {
+        const Configuration &c = node.configuration;
+        const ObjectiveWeights &w = problem_.weights;
+        std::vector<const TaskExplicability *> settled(tasks_, nullptr);
+        std::vector<std::vector<const PooledPlan *>> plans(tasks_);
+        std::vector<int> degree(index_.size(), 0), stamp(index_.size(), -1);
+        for (int t = 0; t < tasks_; ++t) {
+            if (problem_.tasks[t].probability <= 0)
+                continue;
+            const Record &r = node.tasks[t];
+            if (r && r->witnesses_known &&
+                std::all_of(r->touching.begin(), r->touching.end(),
+                            [&](int m) { return contains(c, m); })) {
+                settled[t] = &r->evaluation;
+                continue;
+            }
+            for (const PooledPlan &plan : pool_[t]) {
+                if (plan.cost >= node.explicable_floor[t])
+                    break;
+                if (!valid_in(plan, c))
+                    continue;
+                plans[t].push_back(&plan);
+                for (int m : plan.breakers)
+                    if (stamp[m] != t)
+                        stamp[m] = t, ++degree[m];
+            }
+        }
+        double total = objective_lower_bound(problem_, node.cost, settled, node.robot_bounds);
+        if (std::isinf(total))
+            return total;
+        double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
+        std::vector<int> used(index_.size(), -1);
+        for (int t = 0; t < tasks_; ++t) {
+            if (plans[t].empty())
+                continue;
+            double weight = w.alpha * discounted_horizon(w) * problem_.tasks[t].probability;
+            double floor = node.explicable_floor[t];
+            auto value = [&](double human_optimum) { // the IE term when c_H* <= human_optimum
+                double gap = floor - human_optimum;
+                if (gap <= 0)
+                    return weight * least_ie;
+                return weight * (w.distance == Distance::COST_DIFF ? gap : std::exp(gap));
+            };
+            double best = value(plans[t][0]->cost), hitting = 0;
+            for (std::size_t j = 0; j < plans[t].size(); ++j) {
+                const auto &breakers = plans[t][j]->breakers;
+                if (breakers.empty())
+                    break; // nothing can break it: the optimum stays at most its cost
+                if (std::none_of(breakers.begin(), breakers.end(),
+                                 [&](int m) { return used[m] == t; })) {
+                    double cheapest = INF;
+                    for (int m : breakers) {
+                        used[m] = t;
+                        cheapest = std::min(cheapest,
+                                            w.beta * problem_.modifications[m].cost / degree[m]);
+                    }
+                    hitting += cheapest;
+                }
+                double next = j + 1 < plans[t].size() ? value(plans[t][j + 1]->cost)
+                                                      : weight * least_ie;
+                best = std::min(best, next + hitting);
+            }
+            total += best - weight * least_ie; // the least value is counted already
+        }
+        return total;
+    }
+
+    bool valid_in(const PooledPlan &plan, const Configuration &c) const {
+        return std::all_of(plan.needs.begin(), plan.needs.end(),
+                           [&](int m) { return contains(c, m); }) &&
+               std::none_of(plan.breakers.begin(), plan.breakers.end(),
+                            [&](int m) { return contains(c, m); });
+    }
+
+    // Some modification outside the node is added everywhere (not restricting, or of
+    // negative cost): only what holds whatever those do.
+    double open_bound(const Node &node) const {
         const Configuration &c = node.configuration;
         const ObjectiveWeights &w = problem_.weights;
         auto outside = [&](const std::vector<int> &mods) {
@@ -374,6 +527,7 @@ private:
     std::vector<int> always_;         // added to every configuration
     std::vector<int> robot_relaxing_; // may lower the robot's optimal cost
     std::vector<int> negative_;       // of negative weighted cost
+    std::vector<std::set<PooledPlan>> pool_; // per task, by cost
     std::priority_queue<Node, std::vector<Node>, LaterInQueue> open_;
     std::set<Configuration> visited_;
     DesignResult result_;
