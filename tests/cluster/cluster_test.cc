@@ -214,6 +214,7 @@ TEST(Cluster, SeveralRequestsAtOnce) {
 TEST(Cluster, CancelStopsTheSearchWithWhatItHas) {
     MemqCluster cluster(1);
     auto request = request_of(in_repo("tests/e2e/data/warehouse/signs-3.textproto"), 3);
+    request.search = envdesign::design_request_t::SEARCH_EXHAUSTIVE; // long enough to cancel
     cluster.bus().publish(bus::REQUEST, request);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     envdesign::cancel_t cancel{};

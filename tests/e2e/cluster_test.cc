@@ -23,9 +23,11 @@ const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
 const char *WAREHOUSE = "tests/e2e/data/warehouse/signs-2.textproto";
 
 client::Result design(const LocalCluster &cluster, const std::string &spec,
-                      std::function<void(const client::Progress &)> on_progress = {}) {
+                      std::function<void(const client::Progress &)> on_progress = {},
+                      const std::string &search = "witness") {
     client::Options options;
     options.on_progress = std::move(on_progress);
+    options.search = search;
     options.give_up_after_s = 10;
     return client::run_design_remote(source(spec), cluster.url(), options);
 }
@@ -33,6 +35,19 @@ client::Result design(const LocalCluster &cluster, const std::string &spec,
 void expect_self_contained(const client::Result &result, const std::string &spec) {
     ASSERT_EQ(result.exit_code, 0) << result.error;
     expect_same_design(nlohmann::json::parse(result.json), self_contained(source(spec)));
+}
+
+// The witness search and the exhaustive one through the cluster: the same design.
+TEST(EndToEnd, BothSearchesGiveTheSameDesignThroughTheCoordinator) {
+    LocalCluster cluster(2);
+    client::Result witness = design(cluster, WAREHOUSE);
+    client::Result exhaustive = design(cluster, WAREHOUSE, {}, "exhaustive");
+    ASSERT_EQ(witness.exit_code, 0) << witness.error;
+    ASSERT_EQ(exhaustive.exit_code, 0) << exhaustive.error;
+    auto w = nlohmann::json::parse(witness.json), e = nlohmann::json::parse(exhaustive.json);
+    for (const char *key : {"status", "design", "objective", "tasks"})
+        EXPECT_EQ(w.at(key), e.at(key)) << key;
+    EXPECT_LT(w.at("configurations_total"), e.at("configurations_total"));
 }
 
 TEST(EndToEnd, CoordinatorAndTwoPlannersGiveTheSelfContainedResult) {
@@ -54,7 +69,7 @@ TEST(EndToEnd, PlannerKilledMidRun) {
     client::Result result = design(cluster, WAREHOUSE, [&](const client::Progress &p) {
         if (p.evaluations >= 40 && !killed.exchange(true))
             cluster.planner(0).signal(SIGKILL);
-    });
+    }, "exhaustive"); // the long search, so that the planner dies mid-run
     ASSERT_TRUE(killed);
     expect_self_contained(result, WAREHOUSE);
     EXPECT_EQ(cluster.planner(0).wait(), 128 + SIGKILL);
@@ -70,7 +85,7 @@ TEST(EndToEnd, PlannerStartedMidRunTakesWork) {
     client::Result result = design(cluster, WAREHOUSE, [&](const client::Progress &p) {
         if (p.evaluations >= 30 && !started.exchange(true))
             starter = std::thread([&] { cluster.add_planner(); });
-    });
+    }, "exhaustive");
     if (starter.joinable())
         starter.join();
     ASSERT_TRUE(started);
@@ -221,7 +236,10 @@ TEST(EndToEnd, CliInterruptedCancelsTheRequest) {
     std::string out = (std::filesystem::temp_directory_path() /
                        ("envdesign-cli-" + std::to_string(getpid()) + ".out"))
                           .string();
-    Process cli({binary("envdesign"), "design", spec, "--json", "--connect", cluster.url()}, out);
+    // The exhaustive search: long enough to be interrupted.
+    Process cli({binary("envdesign"), "design", spec, "--json", "--search", "exhaustive",
+                 "--connect", cluster.url()},
+                out);
     auto searching = [&] {
         return cluster.coordinator().output().find("loaded:") != std::string::npos;
     };

@@ -150,9 +150,10 @@ inline nlohmann::json self_contained(const std::string &spec) {
 }
 
 // The fields of SPEC.md's result that do not depend on how the work was spread.
+// (Counts of configurations depend on the order answers come back in, and on the search.)
 inline void expect_same_design(const nlohmann::json &got, const nlohmann::json &want) {
-    for (const char *key : {"status", "design", "objective", "terms", "baseline", "tasks",
-                            "configurations_total", "limit_reached"})
+    for (const char *key :
+         {"status", "design", "objective", "terms", "baseline", "tasks", "limit_reached"})
         EXPECT_EQ(got.at(key), want.at(key)) << key;
 }
 

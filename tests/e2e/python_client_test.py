@@ -17,7 +17,7 @@ sys.path.insert(0, os.path.join(ROOT, "clients", "python"))
 import envdesign_client  # noqa: E402
 
 URL = f"udpm://239.255.76.67:{20001 + (os.getpid() % 10000) * 2}?ttl=0"
-SAME = ("status", "design", "objective", "terms", "baseline", "tasks", "configurations_total",
+SAME = ("status", "design", "objective", "terms", "baseline", "tasks",
         "limit_reached")
 
 
