@@ -370,41 +370,95 @@ private:
         double total = objective_lower_bound(problem_, node.cost, settled, node.robot_bounds);
         if (std::isinf(total))
             return total;
-        double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
-        std::vector<int> used(index_.size(), -1);
+        // Any split of each modification's cost among the tasks whose plans it breaks gives
+        // a bound: start even, then give each cost to the tasks that used it (a few rounds;
+        // the best round counts).
+        int n = index_.size();
+        std::vector<std::vector<double>> share(tasks_);
         for (int t = 0; t < tasks_; ++t) {
             if (plans[t].empty())
                 continue;
-            double weight = w.alpha * discounted_horizon(w) * problem_.tasks[t].probability;
-            double floor = node.explicable_floor[t];
-            auto value = [&](double human_optimum) { // the IE term when c_H* <= human_optimum
-                double gap = floor - human_optimum;
-                if (gap <= 0)
-                    return weight * least_ie;
-                return weight * (w.distance == Distance::COST_DIFF ? gap : std::exp(gap));
-            };
-            double best = value(plans[t][0]->cost), hitting = 0;
-            for (std::size_t j = 0; j < plans[t].size(); ++j) {
-                const auto &breakers = plans[t][j]->breakers;
-                if (breakers.empty())
-                    break; // nothing can break it: the optimum stays at most its cost
-                if (std::none_of(breakers.begin(), breakers.end(),
-                                 [&](int m) { return used[m] == t; })) {
-                    double cheapest = INF;
-                    for (int m : breakers) {
-                        used[m] = t;
-                        cheapest = std::min(cheapest,
-                                            w.beta * problem_.modifications[m].cost / degree[m]);
-                    }
-                    hitting += cheapest;
-                }
-                double next = j + 1 < plans[t].size() ? value(plans[t][j + 1]->cost)
-                                                      : weight * least_ie;
-                best = std::min(best, next + hitting);
-            }
-            total += best - weight * least_ie; // the least value is counted already
+            share[t].assign(n, 0.0);
+            for (const PooledPlan *plan : plans[t])
+                for (int m : plan->breakers)
+                    share[t][m] = w.beta * problem_.modifications[m].cost / degree[m];
         }
-        return total;
+        double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
+        double best_extra = 0;
+        std::vector<std::vector<int>> used(tasks_);
+        std::vector<int> users(n);
+        for (int round = 0; round < 4; ++round) {
+            double extra = 0;
+            std::fill(users.begin(), users.end(), 0);
+            for (int t = 0; t < tasks_; ++t) {
+                if (plans[t].empty())
+                    continue;
+                double weight = w.alpha * discounted_horizon(w) * problem_.tasks[t].probability;
+                extra += level_bound(plans[t], share[t], node.explicable_floor[t], weight,
+                                     least_ie, used[t]) -
+                         weight * least_ie; // the least value is counted already
+                for (int m : used[t])
+                    ++users[m];
+            }
+            best_extra = std::max(best_extra, extra);
+            for (int t = 0; t < tasks_; ++t) {
+                if (plans[t].empty())
+                    continue;
+                std::vector<char> uses(n, 0);
+                for (int m : used[t])
+                    uses[m] = 1;
+                for (int m = 0; m < n; ++m)
+                    if (users[m] > 0 && share[t][m] > 0)
+                        share[t][m] = uses[m] ? w.beta * problem_.modifications[m].cost / users[m]
+                                              : 0.0;
+                    else if (users[m] > 0 && uses[m])
+                        share[t][m] = w.beta * problem_.modifications[m].cost / users[m];
+            }
+        }
+        return total + best_extra;
+    }
+
+    // The least IE term of one task over supersets, given the plans valid there (by cost)
+    // and what breaking each costs this task (`share`): to keep the human's optimum above
+    // the k-th plan, the k cheaper ones must be broken, at least one modification from each
+    // of a family of disjoint breaker sets. `used` gets the modifications of that family at
+    // the least value.
+    static double level_bound(const std::vector<const PooledPlan *> &plans,
+                              const std::vector<double> &share, double floor, double weight,
+                              double least_ie, std::vector<int> &used) {
+        auto value = [&](double human_optimum) { // the IE term when c_H* <= human_optimum
+            double gap = floor - human_optimum;
+            if (gap <= 0)
+                return weight * least_ie;
+            return weight * (least_ie == 0 ? gap : std::exp(gap));
+        };
+        std::vector<const std::vector<int> *> packed;
+        std::vector<char> taken(share.size(), 0);
+        double best = value(plans[0]->cost), hitting = 0;
+        std::size_t best_packed = 0;
+        for (std::size_t j = 0; j < plans.size(); ++j) {
+            const auto &breakers = plans[j]->breakers;
+            if (breakers.empty())
+                break; // nothing can break it: the optimum stays at most its cost
+            if (std::none_of(breakers.begin(), breakers.end(), [&](int m) { return taken[m]; })) {
+                double cheapest = INF;
+                for (int m : breakers) {
+                    taken[m] = 1;
+                    cheapest = std::min(cheapest, share[m]);
+                }
+                hitting += cheapest;
+                packed.push_back(&breakers);
+            }
+            double next = j + 1 < plans.size() ? value(plans[j + 1]->cost) : weight * least_ie;
+            if (next + hitting < best) {
+                best = next + hitting;
+                best_packed = packed.size();
+            }
+        }
+        used.clear();
+        for (std::size_t k = 0; k < best_packed; ++k)
+            used.insert(used.end(), packed[k]->begin(), packed[k]->end());
+        return best;
     }
 
     bool valid_in(const PooledPlan &plan, const Configuration &c) const {
