@@ -1,6 +1,7 @@
 #include "design/witness.h"
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
@@ -212,24 +213,29 @@ void TouchIndex::add_keys(const std::string &prefix, const pddl::Domain &domain,
     }
 }
 
-std::vector<int> TouchIndex::touching(const ModelPair &models, const TaskExplicability &evaluation,
-                                      bool &known) const {
-    known = true;
-    std::vector<int> out;
+WitnessTouch TouchIndex::touching(const ModelPair &models,
+                                  const TaskExplicability &evaluation) const {
+    WitnessTouch out;
     if (evaluation.status == ExplicabilityStatus::INEXPLICABLE)
         return out; // no plan: restricting modifications keep it so
     if (evaluation.status != ExplicabilityStatus::SOLVED || !evaluation.human_plan) {
-        known = false;
+        out.known = false;
         return out;
     }
-    add_keys(kPrefix[ROBOT], models.robot_domain, models.robot_problem, evaluation.plan, out,
-             known);
-    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, evaluation.plan, out,
-             known);
-    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, *evaluation.human_plan,
-             out, known);
-    out.insert(out.end(), every_robot_witness_.begin(), every_robot_witness_.end());
-    return restricting_only(std::move(out));
+    std::vector<int> explicable;
+    add_keys(kPrefix[ROBOT], models.robot_domain, models.robot_problem, evaluation.plan,
+             explicable, out.known);
+    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, evaluation.plan,
+             explicable, out.known);
+    explicable.insert(explicable.end(), every_robot_witness_.begin(), every_robot_witness_.end());
+    out.explicable = restricting_only(std::move(explicable));
+    auto human = touching_human_plan(models, *evaluation.human_plan);
+    out.known = out.known && human;
+    if (human)
+        out.human = std::move(*human);
+    std::set_union(out.explicable.begin(), out.explicable.end(), out.human.begin(),
+                   out.human.end(), std::back_inserter(out.all));
+    return out;
 }
 
 std::optional<std::vector<int>>

@@ -47,6 +47,16 @@ struct ModificationClass {
     std::string why_not;           // the first edit that is not restricting, for the result
 };
 
+// Ascending lists of the restricting modifications that touch an evaluation's witnesses.
+struct WitnessTouch {
+    // False when a witness is missing (an evaluation with no human plan): nothing can be
+    // said, and every modification must be assumed to touch it.
+    bool known = true;
+    std::vector<int> explicable; // touch pi, the most explicable plan
+    std::vector<int> human;      // touch the human's optimal plan
+    std::vector<int> all;        // either
+};
+
 class TouchIndex {
 public:
     explicit TouchIndex(const DesignProblem &problem);
@@ -54,12 +64,9 @@ public:
     const ModificationClass &of(int modification) const { return classes_[modification]; }
     int size() const { return static_cast<int>(classes_.size()); }
 
-    // The restricting modifications (ascending) that touch the witnesses of `evaluation`, an
-    // evaluation made under `models`. `known` is set false when a witness is missing (an
-    // evaluation with no human plan): then nothing can be said and the caller must assume
-    // that every modification touches it.
-    std::vector<int> touching(const ModelPair &models, const TaskExplicability &evaluation,
-                              bool &known) const;
+    // The restricting modifications that touch the witnesses of `evaluation`, an evaluation
+    // made under `models`.
+    WitnessTouch touching(const ModelPair &models, const TaskExplicability &evaluation) const;
     // The restricting modifications that touch `plan` as a plan of the human's model under
     // `models`; nullopt if a step is not an action of that model.
     std::optional<std::vector<int>> touching_human_plan(const ModelPair &models,

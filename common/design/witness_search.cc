@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -17,8 +18,7 @@ namespace {
 // A task's evaluation under some configuration, with the modifications that can change it.
 struct TaskRecord {
     TaskExplicability evaluation;
-    std::vector<int> touching; // restricting modifications touching its witnesses, ascending
-    bool witnesses_known = true; // false: any modification may change it
+    WitnessTouch touch; // the restricting modifications touching its witnesses
 };
 using Record = std::shared_ptr<const TaskRecord>;
 
@@ -41,6 +41,7 @@ struct PooledPlan {
     double cost = 0;
     std::vector<int> breakers;
     std::vector<int> needs;
+    std::shared_ptr<const std::vector<std::string>> steps;
     bool operator<(const PooledPlan &o) const {
         return std::tie(cost, breakers, needs) < std::tie(o.cost, o.breakers, o.needs);
     }
@@ -212,8 +213,7 @@ private:
                 auto record = std::make_shared<TaskRecord>();
                 record->evaluation = std::move(*e.tasks[t]);
                 ModelPair models = configured_models(problem_, node.configuration, t);
-                record->touching =
-                    index_.touching(models, record->evaluation, record->witnesses_known);
+                record->touch = index_.touching(models, record->evaluation);
                 learn_plans(node.configuration, t, models, record->evaluation);
                 node.tasks[t] = std::move(record);
             }
@@ -247,8 +247,9 @@ private:
                        node.explicable_floor, node.cost + problem_.modifications[m].cost, 0};
             for (int t = 0; t < tasks_; ++t) {
                 const Record &r = node.tasks[t];
-                if (!r || !k.restricting || !r->witnesses_known || contains(r->touching, m))
-                    child.tasks[t] = nullptr;
+                if (!r || !k.restricting || !r->touch.known || contains(r->touch.all, m))
+                    child.tasks[t] = r && k.restricting ? equally_cheap(t, *r, m, child.configuration)
+                                                        : nullptr;
                 if (k.edits_robot)
                     child.robot_bounds[t].reset();
                 if (!k.restricting)
@@ -260,6 +261,34 @@ private:
             else
                 skip(1);
         }
+    }
+
+    // When `m` touches only the human's witness of `r`, and a known plan as cheap is still
+    // valid with `m` added: the human's optimum cannot drop (m is restricting), so that plan
+    // is optimal, pi is still optimal, and the evaluation is the same, with new witnesses.
+    Record equally_cheap(int t, const TaskRecord &r, int m, const Configuration &c) const {
+        const TaskExplicability &e = r.evaluation;
+        if (!r.touch.known || e.status != ExplicabilityStatus::SOLVED || !e.human_optimal_cost ||
+            contains(r.touch.explicable, m))
+            return nullptr;
+        double cost = *e.human_optimal_cost;
+        auto it = pool_[t].lower_bound(PooledPlan{cost, {}, {}, nullptr});
+        for (; it != pool_[t].end() && it->cost == cost; ++it) {
+            if (!valid_in(*it, c))
+                continue;
+            auto record = std::make_shared<TaskRecord>(r);
+            record->evaluation.human_plan = *it->steps;
+            record->touch.human.clear();
+            for (int b : it->breakers)
+                if (index_.of(b).restricting)
+                    record->touch.human.push_back(b);
+            record->touch.all.clear();
+            std::set_union(r.touch.explicable.begin(), r.touch.explicable.end(),
+                           record->touch.human.begin(), record->touch.human.end(),
+                           std::back_inserter(record->touch.all));
+            return record;
+        }
+        return nullptr;
     }
 
     static void raise_floor(Node &node, int t, const TaskExplicability &e) {
@@ -281,7 +310,7 @@ private:
             auto touching = index_.touching_human_plan(models, plan);
             if (!touching)
                 return;
-            PooledPlan p{cost, {}, needs};
+            PooledPlan p{cost, {}, needs, std::make_shared<std::vector<std::string>>(plan)};
             for (int m : *touching)
                 if (!contains(c, m))
                     p.breakers.push_back(m);
@@ -313,12 +342,12 @@ private:
             if (problem_.tasks[t].probability <= 0)
                 continue;
             const Record &r = node.tasks[t];
-            if (!r || !r->witnesses_known) {
+            if (!r || !r->touch.known) {
                 for (int m = 0; m < index_.size(); ++m)
                     out.insert(m);
                 break;
             }
-            out.insert(r->touching.begin(), r->touching.end());
+            out.insert(r->touch.all.begin(), r->touch.all.end());
         }
         std::vector<int> result;
         for (int m : out)
@@ -350,8 +379,8 @@ private:
             if (problem_.tasks[t].probability <= 0)
                 continue;
             const Record &r = node.tasks[t];
-            if (r && r->witnesses_known &&
-                std::all_of(r->touching.begin(), r->touching.end(),
+            if (r && r->touch.known &&
+                std::all_of(r->touch.all.begin(), r->touch.all.end(),
                             [&](int m) { return contains(c, m); })) {
                 settled[t] = &r->evaluation;
                 continue;
@@ -493,9 +522,9 @@ private:
             if (robot_monotone)
                 robot_bounds[t] = node.robot_bounds[t];
             const Record &r = node.tasks[t];
-            if (!r || !r->witnesses_known || problem_.tasks[t].probability <= 0)
+            if (!r || !r->touch.known || problem_.tasks[t].probability <= 0)
                 continue;
-            for (int m : r->touching)
+            for (int m : r->touch.all)
                 if (!contains(c, m))
                     open_touching[t].push_back(m);
             if (open_touching[t].empty() && !always_outside) {
