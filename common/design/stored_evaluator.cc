@@ -36,7 +36,7 @@ ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluatio
     for (int t = 0; t < tasks; ++t) {
         if (!e.tasks[t])
             e.tasks[t] = find(e.configuration, t);
-        if (!e.tasks[t] && !e.robot_cost_bounds[t])
+        if (!e.robot_cost_bounds[t]) // the witness search bounds supersets with it
             e.robot_cost_bounds[t] = store_.find_robot_bound(e.configuration, key(t));
         if (!e.tasks[t])
             e.status = EvaluationStatus::LIMIT; // not complete

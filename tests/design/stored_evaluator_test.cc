@@ -80,3 +80,36 @@ TEST(EvaluationStore, KeepsOnlyAnswers) {
 
 } // namespace
 } // namespace envdesign::design
+
+namespace envdesign::design {
+namespace {
+
+// A re-design after the task distribution drifted, on a warehouse floor (24 barriers, 10
+// tasks) with the evaluations of the first search stored: the same answer as a fresh search
+// of the drifted problem, without visiting more configurations than that one.
+TEST(StoredEvaluator, WitnessSearchAfterDriftMatchesAFreshSearch) {
+    DesignProblem problem =
+        load_design_problem(std::string(ENVDESIGN_TEST_DATA) + "/design/warehouse-24/spec.textproto");
+    EvaluationStore store;
+    LocalEvaluator local(problem, 1);
+    StoredEvaluator stored(problem, local, store);
+    DesignResult first = search_design(problem, stored, {});
+    ASSERT_TRUE(first.optimal);
+    DesignProblem drifted = problem;
+    std::swap(drifted.tasks[0].probability, drifted.tasks[9].probability);
+    LocalEvaluator fresh_local(drifted, 1);
+    DesignResult fresh = search_design(drifted, fresh_local, {});
+    LocalEvaluator again_local(drifted, 1);
+    StoredEvaluator again(drifted, again_local, store);
+    DesignResult redesign = search_design(drifted, again, {});
+    ASSERT_TRUE(fresh.optimal && redesign.optimal);
+    EXPECT_EQ(redesign.best->ranked.configuration, fresh.best->ranked.configuration);
+    EXPECT_NEAR(redesign.best->objective.value, fresh.best->objective.value, 1e-9);
+    EXPECT_LE(redesign.counters.configurations_evaluated + redesign.counters.configurations_abandoned,
+              2 * (fresh.counters.configurations_evaluated + fresh.counters.configurations_abandoned))
+        << "fresh " << fresh.counters.configurations_evaluated;
+    EXPECT_LT(redesign.counters.evaluator.task_evaluations, fresh.counters.evaluator.task_evaluations);
+}
+
+} // namespace
+} // namespace envdesign::design
