@@ -49,6 +49,18 @@ SpecLiteral literal_of(const pddl::SExpr &e) {
     return l;
 }
 
+pddl::Literal as_literal(const pddl::SExpr &e) {
+    pddl::Literal l;
+    const pddl::SExpr *atom = &e;
+    if (e.has_head("not") && e.items.size() == 2) {
+        l.negated = true;
+        atom = &e.items[1];
+    }
+    for (std::size_t i = 0; atom->is_list && i < atom->items.size(); ++i)
+        (i == 0 ? l.atom.predicate : l.atom.args.emplace_back()) = atom->items[i].to_string();
+    return l;
+}
+
 std::vector<Side> sides(Model model) {
     std::vector<Side> out;
     if (applies_to_robot(model))
@@ -94,7 +106,7 @@ std::string literal_key(Side side, bool negated, const std::string &atom) {
 
 } // namespace
 
-TouchIndex::TouchIndex(const DesignProblem &problem) {
+TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
     Uses uses[2];
     for (Side side : {ROBOT, HUMAN}) {
         const pddl::Domain &domain = side == ROBOT ? problem.robot_domain : problem.human_domain;
@@ -124,6 +136,8 @@ TouchIndex::TouchIndex(const DesignProblem &problem) {
         }
     }
 
+    for (int side : {ROBOT, HUMAN})
+        added_[side].resize(problem.modifications.size());
     for (int i = 0; i < static_cast<int>(problem.modifications.size()); ++i) {
         ModificationClass c;
         for (const auto &edit : problem.modifications[i].edits) {
@@ -144,6 +158,7 @@ TouchIndex::TouchIndex(const DesignProblem &problem) {
                     break;
                 case EditKind::ADD_GOAL:
                     (side == ROBOT ? every_robot_witness_ : every_human_witness_).push_back(i);
+                    added_[side][i].push_back({"", as_literal(edit.expression)});
                     break;
                 case EditKind::REMOVE_GOAL:
                 case EditKind::REMOVE_PRECONDITION:
@@ -153,6 +168,7 @@ TouchIndex::TouchIndex(const DesignProblem &problem) {
                     break;
                 case EditKind::ADD_PRECONDITION:
                     by_key_[schema].push_back(i);
+                    added_[side][i].push_back({edit.action, as_literal(edit.expression)});
                     break;
                 case EditKind::ADD_EFFECT:
                 case EditKind::REMOVE_EFFECT: {
@@ -192,28 +208,55 @@ void TouchIndex::add_key(const std::string &key, std::vector<int> &out) const {
         out.insert(out.end(), it->second.begin(), it->second.end());
 }
 
-void TouchIndex::add_keys(const std::string &prefix, const pddl::Domain &domain,
-                          const pddl::Problem &problem, const std::vector<std::string> &plan,
-                          std::vector<int> &out, bool &known) const {
-    Side side = prefix == kPrefix[ROBOT] ? ROBOT : HUMAN;
-    for (const auto &l : problem.goal)
-        add_key(literal_key(side, l.negated, l.atom.to_string()), out);
+const TouchIndex::PlanTouch &TouchIndex::plan_touch(int side, const Configuration &configuration,
+                                                    int task,
+                                                    const std::vector<std::string> &plan) const {
+    std::string memo_key = std::to_string(side) + "|" + std::to_string(task) + "|";
+    for (int m : configuration)
+        if (!added_[side][m].empty())
+            memo_key += std::to_string(m) + ",";
+    for (const auto &step : plan)
+        memo_key += step;
+    auto [entry, fresh] = memo_.try_emplace(memo_key);
+    if (!fresh)
+        return entry->second;
+    PlanTouch &out = entry->second;
+    const DesignTask &t = problem_.tasks[task];
+    const pddl::Domain &domain = side == ROBOT ? problem_.robot_domain : problem_.human_domain;
+    std::string prefix = kPrefix[side];
+    for (const auto &l : (side == ROBOT ? t.robot_problem : t.human_problem).goal)
+        add_key(literal_key(Side(side), l.negated, l.atom.to_string()), out.mods);
+    for (int m : configuration)
+        for (const auto &added : added_[side][m])
+            if (added.action.empty())
+                add_key(literal_key(Side(side), added.literal.negated,
+                                    added.literal.atom.to_string()),
+                        out.mods);
     for (const auto &step : plan) {
         std::vector<std::string> words = words_of(step);
         const pddl::Action *action = words.empty() ? nullptr : domain.find_action(words[0]);
         if (!action || action->parameters.size() + 1 != words.size()) {
-            known = false; // a step this model does not have: say nothing
-            return;
+            out.known = false; // a step this model does not have: say nothing
+            return out;
         }
-        add_key(prefix + "act|" + step, out);
-        add_key(prefix + "schema|" + action->name, out);
-        for (const auto &l : action->precondition)
+        add_key(prefix + "act|" + step, out.mods);
+        add_key(prefix + "schema|" + action->name, out.mods);
+        auto add_precondition = [&](const pddl::Literal &l) {
             if (l.atom.predicate != "=")
-                add_key(literal_key(side, l.negated, ground_atom(l.atom, *action, words)), out);
+                add_key(literal_key(Side(side), l.negated, ground_atom(l.atom, *action, words)),
+                        out.mods);
+        };
+        for (const auto &l : action->precondition)
+            add_precondition(l);
+        for (int m : configuration)
+            for (const auto &added : added_[side][m])
+                if (added.action == action->name)
+                    add_precondition(added.literal);
     }
+    return out;
 }
 
-WitnessTouch TouchIndex::touching(const ModelPair &models,
+WitnessTouch TouchIndex::touching(const Configuration &configuration, int task,
                                   const TaskExplicability &evaluation) const {
     WitnessTouch out;
     if (evaluation.status == ExplicabilityStatus::INEXPLICABLE)
@@ -223,13 +266,14 @@ WitnessTouch TouchIndex::touching(const ModelPair &models,
         return out;
     }
     std::vector<int> explicable;
-    add_keys(kPrefix[ROBOT], models.robot_domain, models.robot_problem, evaluation.plan,
-             explicable, out.known);
-    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, evaluation.plan,
-             explicable, out.known);
+    for (int side : {ROBOT, HUMAN}) {
+        const PlanTouch &touch = plan_touch(side, configuration, task, evaluation.plan);
+        out.known = out.known && touch.known;
+        explicable.insert(explicable.end(), touch.mods.begin(), touch.mods.end());
+    }
     explicable.insert(explicable.end(), every_robot_witness_.begin(), every_robot_witness_.end());
     out.explicable = restricting_only(std::move(explicable));
-    auto human = touching_human_plan(models, *evaluation.human_plan);
+    auto human = touching_human_plan(configuration, task, *evaluation.human_plan);
     out.known = out.known && human;
     if (human)
         out.human = std::move(*human);
@@ -239,14 +283,12 @@ WitnessTouch TouchIndex::touching(const ModelPair &models,
 }
 
 std::optional<std::vector<int>>
-TouchIndex::touching_human_plan(const ModelPair &models,
+TouchIndex::touching_human_plan(const Configuration &configuration, int task,
                                 const std::vector<std::string> &plan) const {
-    std::vector<int> out;
-    bool known = true;
-    add_keys(kPrefix[HUMAN], models.human_domain, models.human_problem, plan, out, known);
-    if (!known)
+    const PlanTouch &touch = plan_touch(HUMAN, configuration, task, plan);
+    if (!touch.known)
         return std::nullopt;
-    return restricting_only(std::move(out));
+    return restricting_only(touch.mods);
 }
 
 // Sorted, unique, restricting, with the add_goal modifications of the human's model (they

@@ -47,6 +47,7 @@ struct ModificationClass {
     std::string why_not;           // the first edit that is not restricting, for the result
 };
 
+// One TouchIndex serves one search (it memoizes, and is not thread-safe).
 // Ascending lists of the restricting modifications that touch an evaluation's witnesses.
 struct WitnessTouch {
     // False when a witness is missing (an evaluation with no human plan): nothing can be
@@ -65,19 +66,36 @@ public:
     int size() const { return static_cast<int>(classes_.size()); }
 
     // The restricting modifications that touch the witnesses of `evaluation`, an evaluation
-    // made under `models`.
-    WitnessTouch touching(const ModelPair &models, const TaskExplicability &evaluation) const;
-    // The restricting modifications that touch `plan` as a plan of the human's model under
-    // `models`; nullopt if a step is not an action of that model.
-    std::optional<std::vector<int>> touching_human_plan(const ModelPair &models,
+    // of task `task` under `configuration`. What a step relies on is read from the spec's
+    // domains and the configuration's added preconditions and goals (a superset of what the
+    // configured models say, so never too few), without building the models.
+    WitnessTouch touching(const Configuration &configuration, int task,
+                          const TaskExplicability &evaluation) const;
+    // The restricting modifications that touch `plan` as a plan of the human's model of
+    // `task` under `configuration`; nullopt if a step is not an action of that model.
+    std::optional<std::vector<int>> touching_human_plan(const Configuration &configuration,
+                                                        int task,
                                                         const std::vector<std::string> &plan) const;
 
 private:
-    void add_keys(const std::string &prefix, const pddl::Domain &domain,
-                  const pddl::Problem &problem, const std::vector<std::string> &plan,
-                  std::vector<int> &out, bool &known) const;
+    struct AddedLiteral {
+        std::string action; // for an added precondition; empty for an added goal
+        pddl::Literal literal;
+    };
+    struct PlanTouch {
+        std::vector<int> mods;
+        bool known = true;
+    };
+
+    // Memoized: one plan under configurations that add the same preconditions and goals.
+    const PlanTouch &plan_touch(int side, const Configuration &configuration, int task,
+                                const std::vector<std::string> &plan) const;
     void add_key(const std::string &key, std::vector<int> &out) const;
     std::vector<int> restricting_only(std::vector<int> mods) const;
+
+    const DesignProblem &problem_;
+    std::vector<std::vector<AddedLiteral>> added_[2]; // per side, per modification
+    mutable std::unordered_map<std::string, PlanTouch> memo_;
 
     std::vector<ModificationClass> classes_;
     std::unordered_map<std::string, std::vector<int>> by_key_; // touch key -> modifications

@@ -212,9 +212,8 @@ private:
             } else {
                 auto record = std::make_shared<TaskRecord>();
                 record->evaluation = std::move(*e.tasks[t]);
-                ModelPair models = configured_models(problem_, node.configuration, t);
-                record->touch = index_.touching(models, record->evaluation);
-                learn_plans(node.configuration, t, models, record->evaluation);
+                record->touch = index_.touching(node.configuration, t, record->evaluation);
+                learn_plans(node.configuration, t, record->evaluation);
                 node.tasks[t] = std::move(record);
             }
             if (!node.robot_bounds[t] && t < static_cast<int>(e.robot_cost_bounds.size()))
@@ -298,8 +297,7 @@ private:
 
     // Keeps both witnesses of a new evaluation as plans of the human's model (a most
     // explicable plan is one too, at its human cost).
-    void learn_plans(const Configuration &c, int t, const ModelPair &models,
-                     const TaskExplicability &e) {
+    void learn_plans(const Configuration &c, int t, const TaskExplicability &e) {
         if (e.status != ExplicabilityStatus::SOLVED || !e.human_plan || !e.human_optimal_cost)
             return;
         std::vector<int> needs;
@@ -307,7 +305,7 @@ private:
             if (contains(c, m))
                 needs.push_back(m);
         auto keep = [&](const std::vector<std::string> &plan, double cost) {
-            auto touching = index_.touching_human_plan(models, plan);
+            auto touching = index_.touching_human_plan(c, t, plan);
             if (!touching)
                 return;
             PooledPlan p{cost, {}, needs, std::make_shared<std::vector<std::string>>(plan)};
