@@ -167,14 +167,8 @@ private:
         EvaluationCallbacks callbacks;
         callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
             const Node &node = batch[position.at(partial.configuration)];
-            if (blind(node)) { // grown already: only its own objective matters
-                std::vector<const TaskExplicability *> tasks;
-                for (const auto &t : partial.tasks)
-                    tasks.push_back(t ? &*t : nullptr);
-                return !can_win(objective_lower_bound(problem_, node.cost, tasks,
-                                                      partial.robot_cost_bounds),
-                                node.configuration.size());
-            }
+            if (blind(node)) // grown already: only its own objective matters
+                return !can_win(own_bound(node.cost, partial), node.configuration.size());
             Node known = node; // what the answers so far add; their witnesses are not read yet
             for (int t = 0; t < tasks_; ++t) {
                 if (!known.robot_bounds[t] && t < static_cast<int>(partial.robot_cost_bounds.size()))
@@ -182,7 +176,17 @@ private:
                 if (t < static_cast<int>(partial.tasks.size()) && partial.tasks[t])
                     raise_floor(known, t, *partial.tasks[t]);
             }
-            return !can_win(bound(known), node.configuration.size());
+            if (!can_win(bound(known), node.configuration.size()))
+                return true;
+            // With modifications outside that are added everywhere, the bound of the subtree
+            // is weak and its witnesses narrow little: when the configuration itself cannot
+            // win, stop evaluating it and grow it by every modification instead.
+            if (always_outside(node) && !can_win(own_bound(node.cost, partial),
+                                                 node.configuration.size())) {
+                grow_without_witnesses_.insert(node.configuration);
+                return true;
+            }
+            return false;
         };
         callbacks.done = [&](ConfigurationEvaluation e) {
             Node &node = batch[position.at(e.configuration)];
@@ -201,6 +205,10 @@ private:
         ++done_;
         if (e.status == EvaluationStatus::CUT_OFF) {
             ++counters.configurations_abandoned;
+            if (grow_without_witnesses_.erase(node.configuration) > 0) {
+                std::fill(node.tasks.begin(), node.tasks.end(), nullptr);
+                grow(node); // every modification is a candidate, nothing is inherited
+            }
             report();
             return;
         }
@@ -323,6 +331,19 @@ private:
         keep(e.plan, e.human_plan_cost);
     }
 
+    // A lower bound on the objective of the configuration alone, from what is known of it.
+    double own_bound(double cost, const ConfigurationEvaluation &partial) const {
+        std::vector<const TaskExplicability *> tasks;
+        for (const auto &t : partial.tasks)
+            tasks.push_back(t ? &*t : nullptr);
+        return objective_lower_bound(problem_, cost, tasks, partial.robot_cost_bounds);
+    }
+
+    bool always_outside(const Node &node) const {
+        return std::any_of(always_.begin(), always_.end(),
+                           [&](int m) { return !contains(node.configuration, m); });
+    }
+
     // When every modification outside `node` is added everywhere anyway, its witnesses do not
     // say what to add: it is grown before it is evaluated, and its evaluation may be
     // abandoned as soon as the configuration itself cannot win (as in the exhaustive search).
@@ -356,10 +377,7 @@ private:
 
     // A lower bound on the objective of `node`'s configuration and of every superset.
     double bound(const Node &node) const {
-        const Configuration &c = node.configuration;
-        bool always_outside =
-            std::any_of(always_.begin(), always_.end(), [&](int m) { return !contains(c, m); });
-        return always_outside ? open_bound(node) : restricted_bound(node);
+        return always_outside(node) ? open_bound(node) : restricted_bound(node);
     }
 
     // Every modification outside the node is restricting, of non-negative weighted cost: a
@@ -611,6 +629,7 @@ private:
     std::vector<std::set<PooledPlan>> pool_; // per task, by cost
     std::priority_queue<Node, std::vector<Node>, LaterInQueue> open_;
     std::set<Configuration> visited_;
+    std::set<Configuration> grow_without_witnesses_; // abandoned on their own bound
     DesignResult result_;
     long long generated_ = 0;
     long long done_ = 0;
