@@ -11,6 +11,7 @@
 #include <queue>
 #include <set>
 #include <tuple>
+#include <unordered_set>
 
 namespace envdesign::design {
 namespace {
@@ -59,6 +60,39 @@ struct LaterInQueue {
         return a.configuration > b.configuration;
     }
 };
+
+// The queue of configurations to evaluate, least bound first; pop() moves the node out.
+class OpenList {
+public:
+    bool empty() const { return heap_.empty(); }
+    std::size_t size() const { return heap_.size(); }
+    const Node &top() const { return heap_.front(); }
+    void push(Node node) {
+        heap_.push_back(std::move(node));
+        std::push_heap(heap_.begin(), heap_.end(), LaterInQueue{});
+    }
+    Node pop() {
+        std::pop_heap(heap_.begin(), heap_.end(), LaterInQueue{});
+        Node node = std::move(heap_.back());
+        heap_.pop_back();
+        return node;
+    }
+    void clear() { heap_.clear(); }
+
+private:
+    std::vector<Node> heap_;
+};
+
+// What the evaluator needs of a task known already: its values, not its plans.
+TaskExplicability values_only(const TaskExplicability &e) {
+    TaskExplicability out;
+    out.status = e.status;
+    out.ie = e.ie;
+    out.robot_cost = e.robot_cost;
+    out.human_plan_cost = e.human_plan_cost;
+    out.human_optimal_cost = e.human_optimal_cost;
+    return out;
+}
 
 bool contains(const std::vector<int> &sorted, int value) {
     return std::binary_search(sorted.begin(), sorted.end(), value);
@@ -130,11 +164,10 @@ private:
         while (!open_.empty() && static_cast<int>(batch.size()) < std::max(1, options_.batch_size)) {
             if (result_.best && clearly_greater(open_.top().bound, result_.best->objective.value)) {
                 skip(static_cast<long long>(open_.size())); // every other bound is larger
-                open_ = {};
+                open_.clear();
                 break;
             }
-            Node node = open_.top();
-            open_.pop();
+            Node node = open_.pop();
             double now = bound(node); // plans learnt since it was queued may raise it
             if (clearly_greater(now, node.bound)) {
                 node.bound = now;
@@ -157,10 +190,19 @@ private:
         for (std::size_t i = 0; i < batch.size(); ++i) {
             if (blind(batch[i]))
                 grow(batch[i]);
+            if (std::all_of(batch[i].tasks.begin(), batch[i].tasks.end(),
+                            [](const Record &r) { return r != nullptr; })) {
+                // Known in full from smaller configurations: nothing to ask anyone.
+                ConfigurationEvaluation known = unevaluated(batch[i].configuration);
+                known.status = EvaluationStatus::COMPLETE;
+                finish(batch[i], std::move(known));
+                continue;
+            }
             ConfigurationEvaluation r = unevaluated(batch[i].configuration);
             r.robot_cost_bounds = batch[i].robot_bounds;
             for (const auto &record : batch[i].tasks)
-                r.tasks.push_back(record ? std::optional(record->evaluation) : std::nullopt);
+                r.tasks.push_back(record ? std::optional(values_only(record->evaluation))
+                                         : std::nullopt);
             position[r.configuration] = i;
             requests.push_back(std::move(r));
         }
@@ -213,7 +255,7 @@ private:
             return;
         }
         ++counters.configurations_evaluated;
-        std::vector<TaskExplicability> evaluations;
+        std::vector<const TaskExplicability *> evaluations;
         for (int t = 0; t < tasks_; ++t) {
             if (node.tasks[t]) {
                 ++counters.tasks_inherited;
@@ -227,9 +269,16 @@ private:
             if (!node.robot_bounds[t] && t < static_cast<int>(e.robot_cost_bounds.size()))
                 node.robot_bounds[t] = e.robot_cost_bounds[t];
             raise_floor(node, t, node.tasks[t]->evaluation);
-            evaluations.push_back(node.tasks[t]->evaluation);
+            evaluations.push_back(&node.tasks[t]->evaluation);
         }
-        consider_design(problem_, node.configuration, std::move(evaluations), result_);
+        // Copies of the evaluations only for a design that ranks first.
+        double value = objective_lower_bound(problem_, node.cost, evaluations); // all known
+        if (can_win(value, node.configuration.size()) || node.configuration.empty()) {
+            std::vector<TaskExplicability> copies;
+            for (const auto *e : evaluations)
+                copies.push_back(*e);
+            consider_design(problem_, node.configuration, std::move(copies), result_);
+        }
         if (!blind(node)) {
             node.bound = bound(node);
             grow(node);
@@ -388,9 +437,10 @@ private:
     double restricted_bound(const Node &node) const {
         const Configuration &c = node.configuration;
         const ObjectiveWeights &w = problem_.weights;
+        Scratch &s = scratch_;
+        int n = index_.size();
+        s.reset(tasks_, n);
         std::vector<const TaskExplicability *> settled(tasks_, nullptr);
-        std::vector<std::vector<const PooledPlan *>> plans(tasks_);
-        std::vector<int> degree(index_.size(), 0), stamp(index_.size(), -1);
         for (int t = 0; t < tasks_; ++t) {
             if (problem_.tasks[t].probability <= 0)
                 continue;
@@ -406,10 +456,10 @@ private:
                     break;
                 if (!valid_in(plan, c))
                     continue;
-                plans[t].push_back(&plan);
+                s.plans[t].push_back(&plan);
                 for (int m : plan.breakers)
-                    if (stamp[m] != t)
-                        stamp[m] = t, ++degree[m];
+                    if (s.stamp[m] != t)
+                        s.stamp[m] = t, ++s.degree[m];
             }
         }
         double total = objective_lower_bound(problem_, node.cost, settled, node.robot_bounds);
@@ -418,91 +468,107 @@ private:
         // Any split of each modification's cost among the tasks whose plans it breaks gives
         // a bound: start even, then give each cost to the tasks that used it (a few rounds;
         // the best round counts).
-        int n = index_.size();
-        std::vector<std::vector<double>> share(tasks_);
-        for (int t = 0; t < tasks_; ++t) {
-            if (plans[t].empty())
-                continue;
-            share[t].assign(n, 0.0);
-            for (const PooledPlan *plan : plans[t])
+        auto cost = [&](int m) { return w.beta * problem_.modifications[m].cost; };
+        for (int t = 0; t < tasks_; ++t)
+            for (const PooledPlan *plan : s.plans[t])
                 for (int m : plan->breakers)
-                    share[t][m] = w.beta * problem_.modifications[m].cost / degree[m];
-        }
+                    s.share[t * n + m] = cost(m) / s.degree[m];
         double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
         double best_extra = 0;
-        std::vector<std::vector<int>> used(tasks_);
-        std::vector<int> users(n);
         for (int round = 0; round < 4; ++round) {
             double extra = 0;
-            std::fill(users.begin(), users.end(), 0);
+            std::fill(s.users.begin(), s.users.end(), 0);
             for (int t = 0; t < tasks_; ++t) {
-                if (plans[t].empty())
+                if (s.plans[t].empty())
                     continue;
-                double weight = w.alpha * discounted_horizon(w) * problem_.tasks[t].probability;
-                extra += level_bound(plans[t], share[t], node.explicable_floor[t], weight,
-                                     least_ie, used[t]) -
+                double weight = w.alpha * horizon_ * problem_.tasks[t].probability;
+                extra += level_bound(s.plans[t], &s.share[t * n], node.explicable_floor[t], weight,
+                                     least_ie, s.used[t]) -
                          weight * least_ie; // the least value is counted already
-                for (int m : used[t])
-                    ++users[m];
+                for (int m : s.used[t])
+                    ++s.users[m];
             }
             best_extra = std::max(best_extra, extra);
             for (int t = 0; t < tasks_; ++t) {
-                if (plans[t].empty())
-                    continue;
-                std::vector<char> uses(n, 0);
-                for (int m : used[t])
-                    uses[m] = 1;
-                for (int m = 0; m < n; ++m)
-                    if (users[m] > 0 && share[t][m] > 0)
-                        share[t][m] = uses[m] ? w.beta * problem_.modifications[m].cost / users[m]
-                                              : 0.0;
-                    else if (users[m] > 0 && uses[m])
-                        share[t][m] = w.beta * problem_.modifications[m].cost / users[m];
+                for (int m : s.used[t])
+                    s.mark[m] = round * tasks_ + t + 1;
+                double *share = &s.share[t * n];
+                for (const PooledPlan *plan : s.plans[t])
+                    for (int m : plan->breakers)
+                        if (s.users[m] > 0)
+                            share[m] = s.mark[m] == round * tasks_ + t + 1 ? cost(m) / s.users[m]
+                                                                          : 0.0;
             }
         }
         return total + best_extra;
     }
+
+    // Buffers of restricted_bound, kept between calls.
+    struct Scratch {
+        std::vector<std::vector<const PooledPlan *>> plans; // per task, valid, by cost
+        std::vector<int> degree, stamp, users, mark, taken;
+        std::vector<double> share; // [task * n + modification]
+        std::vector<std::vector<int>> used;
+        std::vector<const std::vector<int> *> packed;
+        int taken_stamp = 0;
+
+        void reset(int tasks, int n) {
+            plans.resize(tasks);
+            used.resize(tasks);
+            for (int t = 0; t < tasks; ++t)
+                plans[t].clear(), used[t].clear();
+            degree.assign(n, 0);
+            stamp.assign(n, -1);
+            users.assign(n, 0);
+            mark.assign(n, 0);
+            if (static_cast<int>(taken.size()) != n)
+                taken.assign(n, 0), taken_stamp = 0;
+            share.assign(static_cast<std::size_t>(tasks) * n, 0.0);
+        }
+    };
 
     // The least IE term of one task over supersets, given the plans valid there (by cost)
     // and what breaking each costs this task (`share`): to keep the human's optimum above
     // the k-th plan, the k cheaper ones must be broken, at least one modification from each
     // of a family of disjoint breaker sets. `used` gets the modifications of that family at
     // the least value.
-    static double level_bound(const std::vector<const PooledPlan *> &plans,
-                              const std::vector<double> &share, double floor, double weight,
-                              double least_ie, std::vector<int> &used) {
+    double level_bound(const std::vector<const PooledPlan *> &plans, const double *share,
+                       double floor, double weight, double least_ie,
+                       std::vector<int> &used) const {
         auto value = [&](double human_optimum) { // the IE term when c_H* <= human_optimum
             double gap = floor - human_optimum;
             if (gap <= 0)
                 return weight * least_ie;
             return weight * (least_ie == 0 ? gap : std::exp(gap));
         };
-        std::vector<const std::vector<int> *> packed;
-        std::vector<char> taken(share.size(), 0);
+        Scratch &s = scratch_;
+        s.packed.clear();
+        int stamp = ++s.taken_stamp;
         double best = value(plans[0]->cost), hitting = 0;
         std::size_t best_packed = 0;
         for (std::size_t j = 0; j < plans.size(); ++j) {
             const auto &breakers = plans[j]->breakers;
             if (breakers.empty())
                 break; // nothing can break it: the optimum stays at most its cost
-            if (std::none_of(breakers.begin(), breakers.end(), [&](int m) { return taken[m]; })) {
+            if (std::none_of(breakers.begin(), breakers.end(),
+                             [&](int m) { return s.taken[m] == stamp; })) {
                 double cheapest = INF;
                 for (int m : breakers) {
-                    taken[m] = 1;
+                    s.taken[m] = stamp;
                     cheapest = std::min(cheapest, share[m]);
                 }
                 hitting += cheapest;
-                packed.push_back(&breakers);
+                s.packed.push_back(&breakers);
             }
             double next = j + 1 < plans.size() ? value(plans[j + 1]->cost) : weight * least_ie;
             if (next + hitting < best) {
                 best = next + hitting;
-                best_packed = packed.size();
+                best_packed = s.packed.size();
             }
         }
         used.clear();
         for (std::size_t k = 0; k < best_packed; ++k)
-            used.insert(used.end(), packed[k]->begin(), packed[k]->end());
+            used.insert(used.end(), s.packed[k]->begin(), s.packed[k]->end());
         return best;
     }
 
@@ -627,8 +693,18 @@ private:
     std::vector<int> robot_relaxing_; // may lower the robot's optimal cost
     std::vector<int> negative_;       // of negative weighted cost
     std::vector<std::set<PooledPlan>> pool_; // per task, by cost
-    std::priority_queue<Node, std::vector<Node>, LaterInQueue> open_;
-    std::set<Configuration> visited_;
+    mutable Scratch scratch_;
+    OpenList open_;
+    struct ConfigurationHash {
+        std::size_t operator()(const Configuration &c) const {
+            std::size_t h = c.size();
+            for (int m : c)
+                h = h * 1000003u ^ static_cast<std::size_t>(m);
+            return h;
+        }
+    };
+    std::unordered_set<Configuration, ConfigurationHash> visited_;
+    double horizon_ = discounted_horizon(problem_.weights); // f_T(x) / x
     std::set<Configuration> grow_without_witnesses_; // abandoned on their own bound
     DesignResult result_;
     long long generated_ = 0;
