@@ -94,7 +94,7 @@ def same_objective(a, b):
 def row_of(kind, mods, tasks, witness, exhaustive):
     row = {"kind": kind, "n": mods, "tasks": tasks,
            "evaluated": witness.get("configurations_evaluated", ""),
-           "visited": witness.get("configurations_visited", ""),
+           "visited": witness.get("configurations_visited", witness.get("configurations_total", "")),
            "planner_runs": witness.get("planner_runs", ""),
            "seconds": f"{witness['wall']:.2f}", "status": witness["status"],
            "gap": witness.get("gap", ""),
@@ -127,21 +127,29 @@ def print_table(rows):
         print("  ".join(v.rjust(w) for v, w in zip(line, widths)))
 
 
-def write_markdown(path, rows, args, binary):
+def source_state():
+    """The commit of the tree and whether it has uncommitted changes, as text."""
     commit = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
                             capture_output=True, text=True).stdout.strip()
     if subprocess.run(["git", "-C", ROOT, "diff", "--quiet", "HEAD"]).returncode:
         commit += " with uncommitted changes"
+    return commit
+
+
+def write_markdown(path, rows, args, binary, commit):
+    built = datetime.datetime.fromtimestamp(os.path.getmtime(os.path.realpath(binary)))
     shown = os.path.relpath(binary, ROOT)
     shown = binary if shown.startswith("..") else shown
     lines = ["# The design search at scale (issue 9)", "",
              "Made by (from the repository's root):", "",
              "    python3 tests/benchmarks/design_scale/run.py " + " ".join(sys.argv[1:]), "",
-             f"{datetime.date.today()}, commit {commit}, {platform.platform()}, "
-             f"{os.cpu_count()} CPUs, 1 worker, binary `{shown}`. "
+             f"{datetime.date.today()}, commit {commit} at the start, {platform.platform()}, "
+             f"{os.cpu_count()} CPUs, 1 worker, binary `{shown}` "
+             f"(modified {built:%Y-%m-%d %H:%M}). "
              f"Median of {args.runs} runs, time limit {args.time_limit} s, seed {args.seed}. "
              "`evaluated`: configurations_evaluated, `visited`: configurations_visited; "
-             "`exh_*`: `--search exhaustive`; ratio: its seconds / the witness search's.", "",
+             "`exh_*`: `--search exhaustive`; ratio: its seconds / the witness search's. "
+             "The problems: tests/benchmarks/design_scale/generate.py (its top comment).", "",
              "| " + " | ".join(COLUMNS) + " |", "|" + "---|" * len(COLUMNS)]
     lines += ["| " + " | ".join(cells(r)) + " |" for r in rows]
     lines += ["", "Designs chosen by the witness search:", ""]
@@ -166,8 +174,11 @@ def main():
     parser.add_argument("--csv")
     parser.add_argument("--markdown")
     args = parser.parse_args()
-    sizes = [parse_size(s) for s in args.sizes.split(",") if s.strip()]
-    rows = []
+    try:
+        sizes = [parse_size(s) for s in args.sizes.split(",") if s.strip()]
+    except argparse.ArgumentTypeError as error:
+        parser.error(str(error))
+    rows, commit = [], source_state()
     with tempfile.TemporaryDirectory(prefix="design-scale-") as temp:
         for kind, mods, tasks in sizes:
             out = os.path.join(args.keep or temp, f"{kind}-{mods}x{tasks}-s{args.seed}")
@@ -184,7 +195,7 @@ def main():
             writer.writeheader()
             writer.writerows(rows)
     if args.markdown:
-        write_markdown(args.markdown, rows, args, args.binary)
+        write_markdown(args.markdown, rows, args, args.binary, commit)
 
 
 if __name__ == "__main__":
