@@ -23,10 +23,10 @@
 // Not thread-safe; the problem must not be changed by anything else.
 
 #include "arrivals/distribution.h"
-#include "design/stored_evaluator.h"
 #include "arrivals/tracker.h"
 #include "design/design_search.h"
 #include "design/local_evaluator.h"
+#include "design/stored_evaluator.h"
 
 #include <memory>
 #include <optional>

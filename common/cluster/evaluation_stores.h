@@ -26,7 +26,7 @@ public:
     // equal cost, so its plans are its own), made if new; it stays valid for the caller
     // while held even if dropped here.
     std::shared_ptr<design::EvaluationStore> store_for(const design::DesignProblem &problem,
-                                                         int heuristic);
+                                                       int heuristic);
     // Drops stores nobody holds (least recently used first) until the rest hold at most
     // max_records.
     void trim();

@@ -64,8 +64,7 @@ void LcmEvaluator::send_jobs(Batch &batch, const design::Deadline &deadline) {
             return;
         envdesign::job_t message =
             job_message(*job, batch.configurations[job->configuration].configuration,
-                        request_.request_id,
-                        request_.spec_hash, request_.heuristic, deadline);
+                        request_.request_id, request_.spec_hash, request_.heuristic, deadline);
         batch.in_flight[router_.send(owner_, std::move(message))] = {*job, Clock::now()};
     }
 }

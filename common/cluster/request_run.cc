@@ -1,6 +1,5 @@
 #include "cluster/request_run.h"
 
-#include "design/stored_evaluator.h"
 #include "bus/channels.h"
 #include "bus/codec.h"
 #include "bus/log.h"
@@ -9,6 +8,7 @@
 #include "cluster/spec_loader.h"
 #include "cluster/wire.h"
 #include "design/relevance.h"
+#include "design/stored_evaluator.h"
 #include "pddl/parse_error.h"
 
 #include <optional>

@@ -55,7 +55,7 @@ struct SearchProgress {
     double best_objective = INF;
     long long planner_runs = 0;
     long long cache_hits = 0;
-    long long open = -1;          // witness search: configurations waiting; -1: not kept
+    long long open = -1;           // witness search: configurations waiting; -1: not kept
     double least_open_bound = INF; // witness search: the least bound among them
 };
 
@@ -65,7 +65,7 @@ struct DesignCounters {
     long long configurations_abandoned = 0; // dropped part-way by the bound
     long long configurations_skipped = 0;   // never started: the bound excluded them
     long long configurations_pruned = 0;    // never generated: --prune relevant left them out
-    long long tasks_inherited = 0; // witness search: task evaluations kept from a subset
+    long long tasks_inherited = 0;          // witness search: task evaluations kept from a subset
     EvaluatorCounters evaluator;
     double seconds = 0;
 };

@@ -4,8 +4,7 @@ namespace envdesign::design {
 
 Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks,
                        bool robot_bounds, const EvaluationCallbacks &callbacks)
-    : callbacks_(callbacks), robot_bounds_(robot_bounds), state_(batch),
-      progress_(batch.size()) {
+    : callbacks_(callbacks), robot_bounds_(robot_bounds), state_(batch), progress_(batch.size()) {
     for (std::size_t c = 0; c < state_.size(); ++c) {
         ConfigurationEvaluation &e = state_[c];
         e.status = EvaluationStatus::LIMIT;
@@ -73,8 +72,7 @@ void Dispatcher::receive(JobAnswer a) {
     }
     if (!p.stopped && complete(c))
         stop(c, EvaluationStatus::COMPLETE);
-    else if (!p.stopped && p.bounds_known == static_cast<int>(p.bounds_needed.size()) &&
-             abandon(c))
+    else if (!p.stopped && p.bounds_known == static_cast<int>(p.bounds_needed.size()) && abandon(c))
         stop(c, EvaluationStatus::CUT_OFF);
     finish_if_idle(c);
 }

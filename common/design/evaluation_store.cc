@@ -24,11 +24,11 @@ TaskKey store_key(const DesignProblem &problem) {
 TaskKey task_key(const DesignProblem &problem, int task) {
     const DesignTask &t = problem.tasks[task];
     return key_of_text(lifted_key(problem.robot_domain, t.robot_problem).hex() +
-                               lifted_key(problem.human_domain, t.human_problem).hex());
+                       lifted_key(problem.human_domain, t.human_problem).hex());
 }
 
-std::optional<TaskExplicability>
-EvaluationStore::find(const Configuration &configuration, const TaskKey &task) const {
+std::optional<TaskExplicability> EvaluationStore::find(const Configuration &configuration,
+                                                       const TaskKey &task) const {
     std::lock_guard lock(mutex_);
     auto it = entries_.find({configuration, task});
     if (it == entries_.end())
@@ -53,8 +53,8 @@ std::optional<double> EvaluationStore::find_robot_bound(const Configuration &con
     return it->second;
 }
 
-void EvaluationStore::keep_robot_bound(const Configuration &configuration,
-                                       const TaskKey &task, double bound) {
+void EvaluationStore::keep_robot_bound(const Configuration &configuration, const TaskKey &task,
+                                       double bound) {
     std::lock_guard lock(mutex_);
     robot_bounds_.insert_or_assign({configuration, task}, bound);
 }

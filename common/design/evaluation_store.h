@@ -27,14 +27,13 @@
 
 namespace envdesign::design {
 
-
 TaskKey store_key(const DesignProblem &problem);
 TaskKey task_key(const DesignProblem &problem, int task);
 
 class EvaluationStore {
 public:
     std::optional<TaskExplicability> find(const Configuration &configuration,
-                                                  const TaskKey &task) const;
+                                          const TaskKey &task) const;
     // Keeps SOLVED and INEXPLICABLE answers; LIMIT says nothing and is not kept.
     void keep(const Configuration &configuration, const TaskKey &task,
               const TaskExplicability &evaluation);
@@ -42,8 +41,7 @@ public:
     // abandon configurations early; INF: the robot has no plan).
     std::optional<double> find_robot_bound(const Configuration &configuration,
                                            const TaskKey &task) const;
-    void keep_robot_bound(const Configuration &configuration, const TaskKey &task,
-                          double bound);
+    void keep_robot_bound(const Configuration &configuration, const TaskKey &task, double bound);
     // Forgets every evaluation and bound of one task.
     void forget(const TaskKey &task);
     std::size_t size() const;    // evaluations

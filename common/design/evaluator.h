@@ -4,10 +4,11 @@
 // The search hands batches of configurations to an Evaluator and gets back, for each, the
 // explicability of every task. A configuration may come with some tasks (and robot-cost
 // bounds) already known: the witness search inherits them from a smaller configuration
-// (witness_search.h); the evaluator works only on the rest and passes the known ones through. How the work is done is the evaluator's business: the
-// in-process LocalEvaluator (local_evaluator.h) runs N planner threads over a shared
-// content-addressed plan cache; an evaluator speaking to planner services over LCM (issue 5)
-// implements the same interface, and the search does not change.
+// (witness_search.h); the evaluator works only on the rest and passes the known ones through. How
+// the work is done is the evaluator's business: the in-process LocalEvaluator (local_evaluator.h)
+// runs N planner threads over a shared content-addressed plan cache; an evaluator speaking to
+// planner services over LCM (issue 5) implements the same interface, and the search does not
+// change.
 //
 // The search keeps control of what is worth evaluating: before each task of a configuration
 // is started and after each one finishes, the evaluator asks `abandon` whether the

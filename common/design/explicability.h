@@ -16,7 +16,6 @@
 #include "design/plan_cache.h"
 #include "design/task_evaluation.h"
 
-
 namespace envdesign::design {
 
 // The planner's answer for one lifted model: skips grounding when the model was seen

@@ -109,8 +109,7 @@ JobAnswer LocalEvaluator::run(const Configuration &configuration, const Job &job
 }
 
 void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
-                              const Deadline &deadline,
-                              const EvaluationCallbacks &callbacks) {
+                              const Deadline &deadline, const EvaluationCallbacks &callbacks) {
     Dispatcher dispatcher(batch, static_cast<int>(problem_.tasks.size()), robot_bounds_, callbacks);
     Channel channel;
     std::vector<std::thread> threads;

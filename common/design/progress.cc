@@ -38,8 +38,8 @@ void ProgressPrinter::update(const SearchProgress &p) {
         std::fprintf(out_,
                      "\r[%s] %lld/%lld configurations | best %s | %lld planner runs | "
                      "%lld cache hits | %.1fs\033[K",
-                     bar.c_str(), p.done, p.total, number(p.best_objective).c_str(),
-                     p.planner_runs, p.cache_hits, seconds);
+                     bar.c_str(), p.done, p.total, number(p.best_objective).c_str(), p.planner_runs,
+                     p.cache_hits, seconds);
     std::fflush(out_);
     drawn_ = true;
 }

@@ -4,7 +4,6 @@
 
 namespace envdesign::design {
 
-
 StoredEvaluator::StoredEvaluator(const DesignProblem &problem, Evaluator &inner,
                                  EvaluationStore &store)
     : problem_(problem), inner_(inner), store_(store) {}
@@ -20,8 +19,8 @@ const TaskKey &StoredEvaluator::key(int task) {
     return key;
 }
 
-std::optional<TaskExplicability>
-StoredEvaluator::find(const Configuration &configuration, int task) {
+std::optional<TaskExplicability> StoredEvaluator::find(const Configuration &configuration,
+                                                       int task) {
     return store_.find(configuration, key(task));
 }
 
@@ -61,8 +60,7 @@ void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation,
 }
 
 void StoredEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
-                               const Deadline &deadline,
-                               const EvaluationCallbacks &callbacks) {
+                               const Deadline &deadline, const EvaluationCallbacks &callbacks) {
     // Complete ones first: they may lower the best objective the partial ones are judged by.
     std::vector<ConfigurationEvaluation> partial;
     std::vector<const ConfigurationEvaluation *> requests;

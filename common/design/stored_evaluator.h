@@ -20,8 +20,8 @@
 // in place: a task's key is computed once and found again by its name. evaluate() runs on one
 // thread at a time, as the Evaluator interface says.
 
-#include "design/evaluation_store.h"
 #include "design/design_problem.h"
+#include "design/evaluation_store.h"
 #include "design/evaluator.h"
 
 #include <string>
@@ -34,18 +34,15 @@ class StoredEvaluator : public Evaluator {
 public:
     // All three must outlive the evaluator; `store` must be the one for
     // store_key(problem).
-    StoredEvaluator(const DesignProblem &problem, Evaluator &inner,
-                    EvaluationStore &store);
+    StoredEvaluator(const DesignProblem &problem, Evaluator &inner, EvaluationStore &store);
 
-    void evaluate(const std::vector<ConfigurationEvaluation> &batch,
-                  const Deadline &deadline,
+    void evaluate(const std::vector<ConfigurationEvaluation> &batch, const Deadline &deadline,
                   const EvaluationCallbacks &callbacks) override;
     // The inner evaluator's counters: configurations answered from the store add nothing.
     EvaluatorCounters counters() const override { return inner_.counters(); }
 
     // The stored evaluation of task index `task` under `configuration`.
-    std::optional<TaskExplicability> find(const Configuration &configuration,
-                                                  int task);
+    std::optional<TaskExplicability> find(const Configuration &configuration, int task);
     // Configurations answered from the store (complete, or abandoned on stored knowledge).
     long long stored_answers() const { return stored_answers_; }
 
@@ -53,8 +50,7 @@ private:
     const TaskKey &key(int task);
     // What the store knows of `configuration` (status COMPLETE when every task is known).
     ConfigurationEvaluation from_store(const ConfigurationEvaluation &request);
-    void keep(const ConfigurationEvaluation &evaluation,
-              const ConfigurationEvaluation &request);
+    void keep(const ConfigurationEvaluation &evaluation, const ConfigurationEvaluation &request);
 
     const DesignProblem &problem_;
     Evaluator &inner_;

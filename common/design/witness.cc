@@ -25,9 +25,7 @@ struct Uses {
         return fresh.count(predicate) && it != mentioned_by.end() && it->second.size() == 1;
     }
 
-    void add(const pddl::Literal &l) {
-        (l.negated ? negative : positive).insert(l.atom.predicate);
-    }
+    void add(const pddl::Literal &l) { (l.negated ? negative : positive).insert(l.atom.predicate); }
 };
 
 struct SpecLiteral {
@@ -229,9 +227,9 @@ const TouchIndex::PlanTouch &TouchIndex::plan_touch(int side, const Configuratio
     for (int m : configuration)
         for (const auto &added : added_[side][m])
             if (added.action.empty())
-                add_key(literal_key(Side(side), added.literal.negated,
-                                    added.literal.atom.to_string()),
-                        out.mods);
+                add_key(
+                    literal_key(Side(side), added.literal.negated, added.literal.atom.to_string()),
+                    out.mods);
     for (const auto &step : plan) {
         std::vector<std::string> words = words_of(step);
         const pddl::Action *action = words.empty() ? nullptr : domain.find_action(words[0]);
@@ -277,8 +275,8 @@ WitnessTouch TouchIndex::touching(const Configuration &configuration, int task,
     out.known = out.known && human;
     if (human)
         out.human = std::move(*human);
-    std::set_union(out.explicable.begin(), out.explicable.end(), out.human.begin(),
-                   out.human.end(), std::back_inserter(out.all));
+    std::set_union(out.explicable.begin(), out.explicable.end(), out.human.begin(), out.human.end(),
+                   std::back_inserter(out.all));
     return out;
 }
 

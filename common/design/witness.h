@@ -98,7 +98,7 @@ private:
     mutable std::unordered_map<std::string, PlanTouch> memo_;
 
     std::vector<ModificationClass> classes_;
-    std::unordered_map<std::string, std::vector<int>> by_key_; // touch key -> modifications
+    std::unordered_map<std::string, std::vector<int>> by_key_;   // touch key -> modifications
     std::vector<int> every_robot_witness_, every_human_witness_; // add_goal
 };
 

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <queue>
@@ -128,7 +128,9 @@ public:
 
     DesignResult run() {
         auto start = std::chrono::steady_clock::now();
-        Node root{{}, std::vector<Record>(tasks_), std::vector<std::optional<double>>(tasks_),
+        Node root{{},
+                  std::vector<Record>(tasks_),
+                  std::vector<std::optional<double>>(tasks_),
                   std::vector<double>(tasks_, 0.0)};
         root.bound = bound(root);
         visited_.insert(root.configuration);
@@ -161,7 +163,8 @@ private:
     // The next configurations worth evaluating, least bound first.
     std::vector<Node> next_batch() {
         std::vector<Node> batch;
-        while (!open_.empty() && static_cast<int>(batch.size()) < std::max(1, options_.batch_size)) {
+        while (!open_.empty() &&
+               static_cast<int>(batch.size()) < std::max(1, options_.batch_size)) {
             if (result_.best && clearly_greater(open_.top().bound, result_.best->objective.value)) {
                 skip(static_cast<long long>(open_.size())); // every other bound is larger
                 open_.clear();
@@ -213,7 +216,8 @@ private:
                 return !can_win(own_bound(node.cost, partial), node.configuration.size());
             Node known = node; // what the answers so far add; their witnesses are not read yet
             for (int t = 0; t < tasks_; ++t) {
-                if (!known.robot_bounds[t] && t < static_cast<int>(partial.robot_cost_bounds.size()))
+                if (!known.robot_bounds[t] &&
+                    t < static_cast<int>(partial.robot_cost_bounds.size()))
                     known.robot_bounds[t] = partial.robot_cost_bounds[t];
                 if (t < static_cast<int>(partial.tasks.size()) && partial.tasks[t])
                     raise_floor(known, t, *partial.tasks[t]);
@@ -223,8 +227,8 @@ private:
             // With modifications outside that are added everywhere, the bound of the subtree
             // is weak and its witnesses narrow little: when the configuration itself cannot
             // win, stop evaluating it and grow it by every modification instead.
-            if (always_outside(node) && !can_win(own_bound(node.cost, partial),
-                                                 node.configuration.size())) {
+            if (always_outside(node) &&
+                !can_win(own_bound(node.cost, partial), node.configuration.size())) {
                 grow_without_witnesses_.insert(node.configuration);
                 return true;
             }
@@ -299,13 +303,17 @@ private:
                 continue;
             ++generated_;
             const ModificationClass &k = index_.of(m);
-            Node child{std::move(child_configuration), node.tasks, node.robot_bounds,
-                       node.explicable_floor, node.cost + problem_.modifications[m].cost, 0};
+            Node child{std::move(child_configuration),
+                       node.tasks,
+                       node.robot_bounds,
+                       node.explicable_floor,
+                       node.cost + problem_.modifications[m].cost,
+                       0};
             for (int t = 0; t < tasks_; ++t) {
                 const Record &r = node.tasks[t];
                 if (!r || !k.restricting || !r->touch.known || contains(r->touch.all, m))
-                    child.tasks[t] = r && k.restricting ? equally_cheap(t, *r, m, child.configuration)
-                                                        : nullptr;
+                    child.tasks[t] =
+                        r && k.restricting ? equally_cheap(t, *r, m, child.configuration) : nullptr;
                 if (k.edits_robot)
                     child.robot_bounds[t].reset();
                 if (!k.restricting)
@@ -496,8 +504,8 @@ private:
                 for (const PooledPlan *plan : s.plans[t])
                     for (int m : plan->breakers)
                         if (s.users[m] > 0)
-                            share[m] = s.mark[m] == round * tasks_ + t + 1 ? cost(m) / s.users[m]
-                                                                          : 0.0;
+                            share[m] =
+                                s.mark[m] == round * tasks_ + t + 1 ? cost(m) / s.users[m] : 0.0;
             }
         }
         return total + best_extra;
@@ -533,8 +541,7 @@ private:
     // of a family of disjoint breaker sets. `used` gets the modifications of that family at
     // the least value.
     double level_bound(const std::vector<const PooledPlan *> &plans, const double *share,
-                       double floor, double weight, double least_ie,
-                       std::vector<int> &used) const {
+                       double floor, double weight, double least_ie, std::vector<int> &used) const {
         auto value = [&](double human_optimum) { // the IE term when c_H* <= human_optimum
             double gap = floor - human_optimum;
             if (gap <= 0)
@@ -689,9 +696,9 @@ private:
     TouchIndex index_;
     int tasks_;
     int max_size_ = 0;
-    std::vector<int> always_;         // added to every configuration
-    std::vector<int> robot_relaxing_; // may lower the robot's optimal cost
-    std::vector<int> negative_;       // of negative weighted cost
+    std::vector<int> always_;                // added to every configuration
+    std::vector<int> robot_relaxing_;        // may lower the robot's optimal cost
+    std::vector<int> negative_;              // of negative weighted cost
     std::vector<std::set<PooledPlan>> pool_; // per task, by cost
     mutable Scratch scratch_;
     OpenList open_;
@@ -705,7 +712,7 @@ private:
     };
     std::unordered_set<Configuration, ConfigurationHash> visited_;
     double horizon_ = discounted_horizon(problem_.weights); // f_T(x) / x
-    std::set<Configuration> grow_without_witnesses_; // abandoned on their own bound
+    std::set<Configuration> grow_without_witnesses_;        // abandoned on their own bound
     DesignResult result_;
     long long generated_ = 0;
     long long done_ = 0;

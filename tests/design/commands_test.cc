@@ -105,10 +105,10 @@ TEST(DesignCommand, PruneRelevantIsNotProvenOptimal) {
 
 TEST(DesignCommand, OneSummaryLineOnStderrWhenNotATerminal) {
     // stderr onto the pipe, stdout away: what a log file of a batch run would get.
-    CommandResult result = run_envdesign(
-        "design " + RESTAURANT +
-            "a-one-task-t1.textproto --search exhaustive 3>&1 1>/dev/null 2>&3 | cat",
-        false);
+    CommandResult result =
+        run_envdesign("design " + RESTAURANT +
+                          "a-one-task-t1.textproto --search exhaustive 3>&1 1>/dev/null 2>&3 | cat",
+                      false);
     EXPECT_EQ(result.exit_code, 0);
     EXPECT_EQ(result.out.rfind("design: 1 of 64 configurations evaluated", 0), 0u) << result.out;
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;

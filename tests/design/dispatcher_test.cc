@@ -114,4 +114,3 @@ TEST(Dispatcher, KnownTasksAndBoundsGetNoJob) {
 
 } // namespace
 } // namespace envdesign::design
-

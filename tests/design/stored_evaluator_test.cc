@@ -11,7 +11,8 @@
 namespace envdesign::design {
 namespace {
 
-const std::string SPEC = std::string(ENVDESIGN_TEST_DATA) + "/../arrivals/data/restaurant-drift.textproto";
+const std::string SPEC =
+    std::string(ENVDESIGN_TEST_DATA) + "/../arrivals/data/restaurant-drift.textproto";
 
 // Probabilities, task names and the objective's weights do not change what an evaluation
 // is; the models, the modifications' edits and the distance do.
@@ -88,8 +89,8 @@ namespace {
 // tasks) with the evaluations of the first search stored: the same answer as a fresh search
 // of the drifted problem, without visiting more configurations than that one.
 TEST(StoredEvaluator, WitnessSearchAfterDriftMatchesAFreshSearch) {
-    DesignProblem problem =
-        load_design_problem(std::string(ENVDESIGN_TEST_DATA) + "/design/warehouse-24/spec.textproto");
+    DesignProblem problem = load_design_problem(std::string(ENVDESIGN_TEST_DATA) +
+                                                "/design/warehouse-24/spec.textproto");
     EvaluationStore store;
     LocalEvaluator local(problem, 1);
     StoredEvaluator stored(problem, local, store);
@@ -105,10 +106,12 @@ TEST(StoredEvaluator, WitnessSearchAfterDriftMatchesAFreshSearch) {
     ASSERT_TRUE(fresh.optimal && redesign.optimal);
     EXPECT_EQ(redesign.best->ranked.configuration, fresh.best->ranked.configuration);
     EXPECT_NEAR(redesign.best->objective.value, fresh.best->objective.value, 1e-9);
-    EXPECT_LE(redesign.counters.configurations_evaluated + redesign.counters.configurations_abandoned,
-              2 * (fresh.counters.configurations_evaluated + fresh.counters.configurations_abandoned))
+    EXPECT_LE(
+        redesign.counters.configurations_evaluated + redesign.counters.configurations_abandoned,
+        2 * (fresh.counters.configurations_evaluated + fresh.counters.configurations_abandoned))
         << "fresh " << fresh.counters.configurations_evaluated;
-    EXPECT_LT(redesign.counters.evaluator.task_evaluations, fresh.counters.evaluator.task_evaluations);
+    EXPECT_LT(redesign.counters.evaluator.task_evaluations,
+              fresh.counters.evaluator.task_evaluations);
 }
 
 } // namespace

@@ -66,10 +66,13 @@ TEST(EndToEnd, CoordinatorAndTwoPlannersGiveTheSelfContainedResult) {
 TEST(EndToEnd, PlannerKilledMidRun) {
     LocalCluster cluster(2);
     std::atomic<bool> killed{false};
-    client::Result result = design(cluster, WAREHOUSE, [&](const client::Progress &p) {
-        if (p.evaluations >= 40 && !killed.exchange(true))
-            cluster.planner(0).signal(SIGKILL);
-    }, "exhaustive"); // the long search, so that the planner dies mid-run
+    client::Result result = design(
+        cluster, WAREHOUSE,
+        [&](const client::Progress &p) {
+            if (p.evaluations >= 40 && !killed.exchange(true))
+                cluster.planner(0).signal(SIGKILL);
+        },
+        "exhaustive"); // the long search, so that the planner dies mid-run
     ASSERT_TRUE(killed);
     expect_self_contained(result, WAREHOUSE);
     EXPECT_EQ(cluster.planner(0).wait(), 128 + SIGKILL);
@@ -82,10 +85,13 @@ TEST(EndToEnd, PlannerStartedMidRunTakesWork) {
     LocalCluster cluster(1);
     std::atomic<bool> started{false};
     std::thread starter;
-    client::Result result = design(cluster, WAREHOUSE, [&](const client::Progress &p) {
-        if (p.evaluations >= 30 && !started.exchange(true))
-            starter = std::thread([&] { cluster.add_planner(); });
-    }, "exhaustive");
+    client::Result result = design(
+        cluster, WAREHOUSE,
+        [&](const client::Progress &p) {
+            if (p.evaluations >= 30 && !started.exchange(true))
+                starter = std::thread([&] { cluster.add_planner(); });
+        },
+        "exhaustive");
     if (starter.joinable())
         starter.join();
     ASSERT_TRUE(started);
