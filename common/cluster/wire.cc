@@ -52,6 +52,7 @@ envdesign::design_counters_t counters_message(const design::DesignCounters &c,
     m.configurations_skipped = c.configurations_skipped;
     m.configurations_pruned = c.configurations_pruned;
     m.tasks_inherited = c.tasks_inherited;
+    m.configurations_probed = c.configurations_probed;
     m.task_evaluations = c.evaluator.task_evaluations;
     m.planner_runs = c.evaluator.planner_runs;
     m.cache_hits = c.evaluator.cache_hits;

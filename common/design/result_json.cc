@@ -92,6 +92,7 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
     out["planner_seconds"] = c.evaluator.planner_seconds;
     out["limit_reached"] = result.limit_reached;
     out["tasks_inherited"] = c.tasks_inherited;
+    out["configurations_probed"] = c.configurations_probed;
     if (result.gap)
         out["gap"] = json_number(*result.gap);
     out["notes"] = result.notes;

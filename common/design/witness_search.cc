@@ -137,12 +137,17 @@ public:
         ++generated_;
         open_.push(std::move(root));
         bool interrupted = false;
+        bool probed = false;
         while (!open_.empty()) {
             if (options_.deadline.expired()) {
                 interrupted = true;
                 break;
             }
             evaluate(next_batch());
+            if (!probed && result_.baseline) {
+                probe_shortcuts();
+                probed = true;
+            }
         }
         result_.limit_reached = interrupted || limit_seen_;
         result_.optimal = !result_.limit_reached;
@@ -386,6 +391,83 @@ private:
         };
         keep(*e.human_plan, *e.human_optimal_cost);
         keep(e.plan, e.human_plan_cost);
+    }
+
+    // Before the search proper, when every modification is restricting: meets each task's
+    // plans of the human's model that are cheaper than its most explicable plan. A probe
+    // design breaks every such plan known; the human's optimal plan there is either another
+    // one (whose breakers are new, since it avoids all the others) or no cheaper, and then
+    // the known ones are all there is to break. Probes are real designs, evaluated as such;
+    // what they add is plans for the bounds and, within the size limit, designs to beat.
+    void probe_shortcuts() {
+        if (!always_.empty())
+            return;
+        std::set<int> active;
+        for (int t = 0; t < tasks_; ++t)
+            if (problem_.tasks[t].probability > 0 &&
+                result_.baseline->tasks[t].status == ExplicabilityStatus::SOLVED)
+                active.insert(t);
+        std::set<Configuration> tried{{}};
+        for (int round = 0; round < 64 && !active.empty() && !options_.deadline.expired();
+             ++round) {
+            std::map<Configuration, std::vector<int>> probes; // design -> the tasks it probes
+            std::vector<int> shared(index_.size(), 0);        // how many tasks' plans each breaks
+            for (int t = 0; t < tasks_; ++t) {
+                std::set<int> mods;
+                for (const PooledPlan &plan : pool_[t])
+                    mods.insert(plan.breakers.begin(), plan.breakers.end());
+                for (int m : mods)
+                    ++shared[m];
+            }
+            for (int t : std::set<int>(active)) {
+                // A cheap way to break every known cheaper plan: per plan not broken yet,
+                // the breaker that the most tasks' plans share.
+                double floor = result_.baseline->tasks[t].human_plan_cost;
+                std::set<int> design_set;
+                for (const PooledPlan &plan : pool_[t]) {
+                    if (plan.cost >= floor || !plan.needs.empty() || plan.breakers.empty() ||
+                        std::any_of(plan.breakers.begin(), plan.breakers.end(),
+                                    [&](int m) { return design_set.count(m) > 0; }))
+                        continue;
+                    design_set.insert(*std::max_element(
+                        plan.breakers.begin(), plan.breakers.end(), [&](int a, int b) {
+                            return shared[a] != shared[b] ? shared[a] < shared[b] : a > b;
+                        }));
+                }
+                Configuration design(design_set.begin(), design_set.end());
+                if (!tried.insert(design).second && !probes.count(design))
+                    active.erase(t); // nothing new to break
+                else
+                    probes[design].push_back(t);
+            }
+            std::vector<ConfigurationEvaluation> requests;
+            for (const auto &[design, tasks] : probes)
+                requests.push_back(unevaluated(design));
+            EvaluationCallbacks callbacks;
+            callbacks.abandon = [](const ConfigurationEvaluation &) { return false; };
+            callbacks.done = [&](ConfigurationEvaluation e) {
+                const std::vector<int> &probed = probes.at(e.configuration);
+                if (e.status != EvaluationStatus::COMPLETE) {
+                    for (int t : probed)
+                        active.erase(t);
+                    return;
+                }
+                std::vector<TaskExplicability> tasks;
+                for (int t = 0; t < tasks_; ++t) {
+                    learn_plans(e.configuration, t, *e.tasks[t]);
+                    tasks.push_back(std::move(*e.tasks[t]));
+                }
+                for (int t : probed)
+                    if (!(tasks[t].human_optimal_cost.value_or(INF) <
+                          result_.baseline->tasks[t].human_plan_cost))
+                        active.erase(t); // no cheaper plan is left
+                ++result_.counters.configurations_probed;
+                if (static_cast<int>(e.configuration.size()) <= max_size_)
+                    consider_design(problem_, e.configuration, std::move(tasks), result_);
+            };
+            if (!requests.empty())
+                evaluator_.evaluate(requests, options_.deadline, callbacks);
+        }
     }
 
     // A lower bound on the objective of the configuration alone, from what is known of it.

@@ -50,6 +50,7 @@ void put_counters(json &out, const envdesign::design_counters_t &c) {
     out["configurations_skipped"] = c.configurations_skipped;
     out["configurations_pruned"] = c.configurations_pruned;
     out["tasks_inherited"] = c.tasks_inherited;
+    out["configurations_probed"] = c.configurations_probed;
     out["task_evaluations"] = c.task_evaluations;
     out["cache_hits"] = c.cache_hits;
     out["groundings_skipped"] = c.groundings_skipped;
