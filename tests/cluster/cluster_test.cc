@@ -181,7 +181,9 @@ TEST(Cluster, NewDistributionIsAReweightingOfStoredEvaluations) {
 
     auto first = cluster.request(request_of(even, 1));
     EXPECT_GT(first.counters.jobs_sent, 0);
-    EXPECT_EQ(first.counters.stored_answers, 0);
+    // Within one request, designs probed before the search (witness_search.h) are answered
+    // from the store when the search reaches them, and nothing else is.
+    EXPECT_LE(first.counters.stored_answers, first.counters.configurations_probed);
 
     auto second = cluster.request(request_of(skewed, 2));
     expect_same_design(json_of(second), local_result(skewed));
