@@ -56,9 +56,7 @@ public:
             counters.configurations_pruned = counters.configurations_total - generated_;
         result_.limit_reached = interrupted || limit_seen_;
         result_.optimal = !result_.limit_reached && counters.configurations_pruned == 0;
-        counters.evaluator = evaluator_.counters();
-        counters.seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        close_counters(counters, evaluator_, start);
         report();
         return std::move(result_);
     }
@@ -238,6 +236,13 @@ long long binomial(long long n, long long k) {
         value = value * static_cast<long double>(n - k + i) / static_cast<long double>(i);
     return value >= static_cast<long double>(LLONG_MAX) ? LLONG_MAX
                                                         : static_cast<long long>(value + 0.5L);
+}
+
+void close_counters(DesignCounters &counters, const Evaluator &evaluator,
+                    std::chrono::steady_clock::time_point start) {
+    counters.evaluator = evaluator.counters();
+    counters.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void consider_design(const DesignProblem &problem, const Configuration &configuration,

@@ -27,6 +27,7 @@
 #include "design/evaluator.h"
 #include "design/objective.h"
 
+#include <chrono>
 #include <functional>
 #include <optional>
 #include <string>
@@ -90,6 +91,10 @@ struct DesignResult {
     std::vector<std::string> notes;
     DesignCounters counters;
 };
+
+// Shared by the searches: the evaluator's counters and the seconds since `start`.
+void close_counters(DesignCounters &counters, const Evaluator &evaluator,
+                    std::chrono::steady_clock::time_point start);
 
 // Shared by the searches: the evaluated design `configuration` (every task known), and
 // whether it replaces result.best (and result.baseline for {}).

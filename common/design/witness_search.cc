@@ -115,9 +115,7 @@ public:
         }
         auto &counters = result_.counters;
         counters.configurations_total = generated_;
-        counters.evaluator = evaluator_.counters();
-        counters.seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        close_counters(counters, evaluator_, start);
         report();
         return std::move(result_);
     }
