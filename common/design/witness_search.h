@@ -20,20 +20,24 @@
 // it evaluates finds S*. Modifications that are not restricting or cost less than nothing
 // are therefore added everywhere (the result's notes say which forced that).
 //
-// Bounds, valid for a configuration and all its supersets (so a configuration whose bound
-// cannot win is never evaluated and never grown):
+// Bounds, valid for a configuration and all its supersets, so that a configuration whose
+// bound cannot win is never evaluated and never grown (witness_bound.h):
 //   - a task that no modification outside xi can touch keeps its value (*);
 //   - any other task: IE at its least, robot cost at least c_R* of xi when every
 //     modification outside xi is restricting for the robot (c_R* never drops), else 0;
-//   - a task that keeps its value unless one of its touching modifications T_t is added
-//     costs, beyond that least value, min(its excess, min over m in T_t of
-//     beta * c_m / deg(m)), deg(m) the number of tasks m touches: the cost of each added
-//     modification is shared among the tasks it changes (non-negative costs only).
-// Configurations are evaluated best first (least bound), so the search stops once the least
-// open bound cannot beat the best design; a time limit leaves the proven gap.
+//   - when everything outside is restricting: c_H(pi) never drops, and the human's optimum
+//     is at most the cost of any known human plan still valid; pushing it above the k-th
+//     cheapest one means breaking the cheaper ones, and each modification's cost is split
+//     among the tasks whose plans it breaks. Otherwise, a task that keeps its value unless a
+//     touching modification is added pays a share of the cheapest one.
+// Before the search proper, probe designs that break each task's known cheaper plans teach
+// it the plans these bounds need. Configurations are evaluated best first (least bound), so
+// the search stops once the least open bound cannot beat the best design; a time limit
+// leaves the proven gap.
 // A configuration inherits a task's evaluation from the configuration it grew from when the
-// added modification is restricting and touches none of that task's witnesses (*): the
-// evaluator is asked only for the other tasks, and the visit costs a touch test.
+// added modification is restricting and touches none of that task's witnesses (*), or only
+// the human's one while a known plan as cheap is still valid: the evaluator is asked only
+// for the other tasks, and the visit costs a touch test. docs/design-search.md has more.
 
 #include "design/design_search.h"
 
