@@ -294,8 +294,9 @@ private:
     // plans of the human's model that are cheaper than its most explicable plan. A probe
     // design breaks every such plan known (one breaker each, the one most tasks' plans
     // share); the human's optimal plan there is either another cheaper one, which joins
-    // the pool, or none, and then breaking the known ones is enough. Probes are real designs, evaluated as such;
-    // what they add is plans for the bounds and, within the size limit, designs to beat.
+    // the pool, or none, and then breaking the known ones is enough. Probes are real designs,
+    // evaluated as such; what they add is plans for the bounds and, within the size limit, designs
+    // to beat.
     void probe_shortcuts() {
         if (!bound_.always().empty())
             return;
