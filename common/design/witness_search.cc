@@ -282,7 +282,9 @@ private:
                 if (!k.restricting)
                     child.explicable_floor[t] = 0;
             }
-            child.bound = bound_(child);
+            // The parent's bound holds for the child's supersets too; its own is computed
+            // when it is taken from the queue, if it ever is.
+            child.bound = node.bound;
             if (can_win(child.bound, child.configuration.size()))
                 open_.push(std::move(child));
             else
