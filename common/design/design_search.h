@@ -48,6 +48,9 @@ struct DesignSearchOptions {
     // empty: every subset is a candidate (exact).
     std::function<std::vector<int>(const Configuration &)> relevant;
     int batch_size = 8; // configurations per evaluate() call
+    // Witness search: try the hitting-set phase (hitting_set.h) before the best-first
+    // search; off only to test or measure the best-first search alone.
+    bool hitting_sets = true;
 };
 
 struct SearchProgress {

@@ -25,6 +25,16 @@ SupersetBound::SupersetBound(const DesignProblem &problem, const TouchIndex &ind
     }
 }
 
+TaskExplicability values_only(const TaskExplicability &e) {
+    TaskExplicability out;
+    out.status = e.status;
+    out.ie = e.ie;
+    out.robot_cost = e.robot_cost;
+    out.human_plan_cost = e.human_plan_cost;
+    out.human_optimal_cost = e.human_optimal_cost;
+    return out;
+}
+
 void raise_floor(Node &node, int t, const TaskExplicability &e) {
     if (e.status == ExplicabilityStatus::SOLVED)
         node.explicable_floor[t] = std::max(node.explicable_floor[t], e.human_plan_cost);

@@ -51,6 +51,9 @@ struct PooledPlan {
 // Whether ascending `sorted` holds `value`.
 bool contains(const std::vector<int> &sorted, int value);
 
+// What the evaluator needs of a task known already: its values, not its plans.
+TaskExplicability values_only(const TaskExplicability &e);
+
 // Raises task t's floor on c_H(pi) to what evaluation `e` says.
 void raise_floor(Node &node, int t, const TaskExplicability &e);
 

@@ -1,6 +1,7 @@
 #include "design/witness_search.h"
 
 #include "design/witness_bound.h"
+#include "design/witness_learning.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,6 +20,7 @@ using witness::PooledPlan;
 using witness::raise_floor;
 using witness::Record;
 using witness::TaskRecord;
+using witness::values_only;
 
 // Least bound first; then the order in which SPEC.md breaks ties.
 struct LaterInQueue {
@@ -55,24 +57,15 @@ private:
     std::vector<Node> heap_;
 };
 
-// What the evaluator needs of a task known already: its values, not its plans.
-TaskExplicability values_only(const TaskExplicability &e) {
-    TaskExplicability out;
-    out.status = e.status;
-    out.ie = e.ie;
-    out.robot_cost = e.robot_cost;
-    out.human_plan_cost = e.human_plan_cost;
-    out.human_optimal_cost = e.human_optimal_cost;
-    return out;
-}
-
 class WitnessSearch {
 public:
     WitnessSearch(const DesignProblem &problem, Evaluator &evaluator,
                   const DesignSearchOptions &options,
                   const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          index_(problem), bound_(problem, index_), tasks_(static_cast<int>(problem.tasks.size())) {
+          index_(problem), bound_(problem, index_),
+          learner_(problem, evaluator, options, index_, bound_, result_),
+          tasks_(static_cast<int>(problem.tasks.size())) {
         for (int m : bound_.always()) {
             const ModificationClass &c = index_.of(m);
             const Modification &mod = problem.modifications[m];
@@ -103,18 +96,26 @@ public:
             }
             evaluate(next_batch());
             if (!probed && result_.baseline) {
-                probe_shortcuts();
                 probed = true;
+                learner_.probe_shortcuts();
+                if (learner_.prove_by_hitting_sets()) {
+                    skip(static_cast<long long>(open_.size()));
+                    open_.clear();
+                    result_.notes.push_back("proven optimal by the hitting-set phase after " +
+                                            std::to_string(learner_.designs()) +
+                                            " designs (docs/design-search.md)");
+                }
             }
         }
-        result_.limit_reached = interrupted || limit_seen_;
+        result_.limit_reached = interrupted || limit_seen_ || learner_.limit_seen();
         result_.optimal = !result_.limit_reached;
         if (result_.limit_reached) {
             double least = std::min(open_.empty() ? INF : open_.top().bound, least_unfinished_);
+            least = std::max(least, learner_.lower_bound()); // both hold for every design
             result_.gap = result_.best ? std::max(0.0, result_.best->objective.value - least) : INF;
         }
         auto &counters = result_.counters;
-        counters.configurations_total = generated_;
+        counters.configurations_total = generated_ + learner_.designs();
         close_counters(counters, evaluator_, start);
         report();
         return std::move(result_);
@@ -237,6 +238,8 @@ private:
             raise_floor(node, t, node.tasks[t]->evaluation);
             evaluations.push_back(&node.tasks[t]->evaluation);
         }
+        if (node.configuration.empty())
+            learner_.evaluated(node);
         // Copies of the evaluations only for a design that ranks first.
         double value = objective_lower_bound(problem_, node.cost, evaluations); // all known
         if (can_win(value, node.configuration.size()) || node.configuration.empty()) {
@@ -289,84 +292,6 @@ private:
                 open_.push(std::move(child));
             else
                 skip(1);
-        }
-    }
-
-    // Before the search proper, when every modification is restricting: meets each task's
-    // plans of the human's model that are cheaper than its most explicable plan. A probe
-    // design breaks every such plan known (one breaker each, the one most tasks' plans
-    // share); the human's optimal plan there is either another cheaper one, which joins
-    // the pool, or none, and then breaking the known ones is enough. Probes are real designs,
-    // evaluated as such; what they add is plans for the bounds and, within the size limit, designs
-    // to beat.
-    void probe_shortcuts() {
-        if (!bound_.always().empty())
-            return;
-        std::set<int> active;
-        for (int t = 0; t < tasks_; ++t)
-            if (problem_.tasks[t].probability > 0 &&
-                result_.baseline->tasks[t].status == ExplicabilityStatus::SOLVED)
-                active.insert(t);
-        std::set<Configuration> tried{{}};
-        for (int round = 0; round < 64 && !active.empty() && !options_.deadline.expired();
-             ++round) {
-            std::map<Configuration, std::vector<int>> probes; // design -> the tasks it probes
-            std::vector<int> shared(index_.size(), 0);        // how many tasks' plans each breaks
-            for (int t = 0; t < tasks_; ++t) {
-                std::set<int> mods;
-                for (const PooledPlan &plan : bound_.plans(t))
-                    mods.insert(plan.breakers.begin(), plan.breakers.end());
-                for (int m : mods)
-                    ++shared[m];
-            }
-            for (int t : std::set<int>(active)) {
-                // A cheap way to break every known cheaper plan: per plan not broken yet,
-                // the breaker that the most tasks' plans share.
-                double floor = result_.baseline->tasks[t].human_plan_cost;
-                std::set<int> design_set;
-                for (const PooledPlan &plan : bound_.plans(t)) {
-                    if (plan.cost >= floor || !plan.needs.empty() || plan.breakers.empty() ||
-                        std::any_of(plan.breakers.begin(), plan.breakers.end(),
-                                    [&](int m) { return design_set.count(m) > 0; }))
-                        continue;
-                    design_set.insert(*std::max_element(
-                        plan.breakers.begin(), plan.breakers.end(), [&](int a, int b) {
-                            return shared[a] != shared[b] ? shared[a] < shared[b] : a > b;
-                        }));
-                }
-                Configuration design(design_set.begin(), design_set.end());
-                if (!tried.insert(design).second && !probes.count(design))
-                    active.erase(t); // nothing new to break
-                else
-                    probes[design].push_back(t);
-            }
-            std::vector<ConfigurationEvaluation> requests;
-            for (const auto &[design, tasks] : probes)
-                requests.push_back(unevaluated(design));
-            EvaluationCallbacks callbacks;
-            callbacks.abandon = [](const ConfigurationEvaluation &) { return false; };
-            callbacks.done = [&](ConfigurationEvaluation e) {
-                const std::vector<int> &probed = probes.at(e.configuration);
-                if (e.status != EvaluationStatus::COMPLETE) {
-                    for (int t : probed)
-                        active.erase(t);
-                    return;
-                }
-                std::vector<TaskExplicability> tasks;
-                for (int t = 0; t < tasks_; ++t) {
-                    bound_.learn(e.configuration, t, *e.tasks[t]);
-                    tasks.push_back(std::move(*e.tasks[t]));
-                }
-                for (int t : probed)
-                    if (!(tasks[t].human_optimal_cost.value_or(INF) <
-                          result_.baseline->tasks[t].human_plan_cost))
-                        active.erase(t); // no cheaper plan is left
-                ++result_.counters.configurations_probed;
-                if (static_cast<int>(e.configuration.size()) <= max_size_)
-                    consider_design(problem_, e.configuration, std::move(tasks), result_);
-            };
-            if (!requests.empty())
-                evaluator_.evaluate(requests, options_.deadline, callbacks);
         }
     }
 
@@ -445,6 +370,8 @@ private:
     const std::function<void(const SearchProgress &)> &progress_;
     TouchIndex index_;
     witness::SupersetBound bound_;
+    DesignResult result_;
+    witness::DesignLearner learner_;
     int tasks_;
     int max_size_ = 0;
     OpenList open_;
@@ -458,7 +385,6 @@ private:
     };
     std::unordered_set<Configuration, ConfigurationHash> visited_;
     std::set<Configuration> grow_without_witnesses_; // abandoned on their own bound
-    DesignResult result_;
     long long generated_ = 0;
     long long done_ = 0;
     bool limit_seen_ = false;

@@ -1,6 +1,7 @@
 // The witness search on generated warehouse floors (tests/benchmarks/design_scale/
 // generate.py): every modification is a barrier that restricts, so its pooled-plan bounds,
-// probes and reuse of equally cheap plans all run; the exhaustive search is the reference.
+// probes and reuse of equally cheap plans all run (with the hitting-set phase off), and the
+// hitting-set phase proves the answer (on); the exhaustive search is the reference.
 
 #include "design/design_search.h"
 #include "design/design_spec.h"
@@ -18,16 +19,29 @@ TEST_P(WarehouseAgreement, SameDesignAsEverySubset) {
                                                 GetParam() + "/spec.textproto");
     DesignSearchOptions exhaustive;
     exhaustive.method = SearchMethod::EXHAUSTIVE;
-    LocalEvaluator every(problem, 1), witnessed(problem, 1);
+    LocalEvaluator every(problem, 1);
     DesignResult want = search_design(problem, every, exhaustive);
-    DesignResult got = search_design(problem, witnessed, {});
-    ASSERT_TRUE(want.optimal && got.optimal);
-    EXPECT_EQ(got.best->ranked.configuration, want.best->ranked.configuration);
-    EXPECT_NEAR(got.best->objective.value, want.best->objective.value, 1e-9);
+    ASSERT_TRUE(want.optimal);
     EXPECT_FALSE(want.best->ranked.configuration.empty()); // a floor where barriers pay
-    EXPECT_TRUE(got.notes.empty());                        // every barrier restricts
-    EXPECT_LT(got.counters.configurations_evaluated,
-              want.counters.configurations_evaluated + want.counters.configurations_abandoned);
+    for (bool hitting_sets : {false, true}) {
+        SCOPED_TRACE(hitting_sets ? "hitting-set phase" : "best-first search alone");
+        DesignSearchOptions witness;
+        witness.hitting_sets = hitting_sets;
+        LocalEvaluator witnessed(problem, 1);
+        DesignResult got = search_design(problem, witnessed, witness);
+        ASSERT_TRUE(got.optimal);
+        EXPECT_EQ(got.best->ranked.configuration, want.best->ranked.configuration);
+        EXPECT_NEAR(got.best->objective.value, want.best->objective.value, 1e-9);
+        // Every barrier restricts: nothing is added everywhere; the phase proves it or not.
+        bool proven = false;
+        for (const std::string &note : got.notes) {
+            EXPECT_EQ(note.find("added to every configuration"), std::string::npos) << note;
+            proven = proven || note.find("hitting-set phase") != std::string::npos;
+        }
+        EXPECT_EQ(proven, hitting_sets);
+        EXPECT_LT(got.counters.configurations_evaluated,
+                  want.counters.configurations_evaluated + want.counters.configurations_abandoned);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(Floors, WarehouseAgreement,

@@ -293,7 +293,10 @@ enum class Target { HUMAN, ROBOT, BOTH };
 
 class Generator {
 public:
-    explicit Generator(unsigned seed) : seed_(seed), r_(seed) {}
+    // `restricting_only`: every modification restricting and of non-negative cost, and up
+    // to 9 of them (the witness search's hitting-set phase applies).
+    explicit Generator(unsigned seed, bool restricting_only = false)
+        : seed_(seed), restricting_only_(restricting_only), r_(seed) {}
 
     Generated run() {
         world();
@@ -458,8 +461,8 @@ private:
     }
 
     void modifications() {
-        int count = r_.between(3, 7);
-        std::vector<std::string> kinds = all_kinds();
+        int count = restricting_only_ ? r_.between(3, 9) : r_.between(3, 7);
+        std::vector<std::string> kinds = restricting_only_ ? RESTRICTING_KINDS : all_kinds();
         // The first kind cycles with the seed, so that every kind is met in a few seeds; the
         // others are drawn without repeats, except barriers (the paper's design).
         std::string first = kinds[seed_ % kinds.size()];
@@ -510,8 +513,9 @@ private:
         for (std::size_t m = 0; m < g_.modifications.size(); ++m) {
             double cost = mode == 0   ? 0 // every design costs nothing: ties everywhere
                           : mode <= 4 ? 1 // equal costs
-                          : mode == 5 ? r_.pick(std::vector<double>{-0.5, 0.5, 1, 2}) // a saving
-                                      : r_.pick(std::vector<double>{0, 0.5, 1, 1, 2, 3});
+                          : mode == 5 && !restricting_only_
+                              ? r_.pick(std::vector<double>{-0.5, 0.5, 1, 2}) // a saving
+                              : r_.pick(std::vector<double>{0, 0.5, 1, 1, 2, 3});
             g_.costs_of_modifications.push_back(cost);
         }
     }
@@ -893,6 +897,7 @@ private:
     }
 
     unsigned seed_;
+    bool restricting_only_;
     Random r_;
     Generated g_;
     int isolated_robot_ = -1, isolated_human_ = -1;
@@ -929,20 +934,25 @@ struct Answer {
     std::vector<double> baseline_ie; // per task
     long long evaluated = 0;
     double seconds = 0;
+    bool hitting_set_proof = false; // the witness search's hitting-set phase proved it
 };
 
-Answer search(const DesignProblem &problem, SearchMethod method) {
+Answer search(const DesignProblem &problem, SearchMethod method, bool hitting_sets = true) {
     auto start = std::chrono::steady_clock::now();
     LocalEvaluator evaluator(problem, 1);
     DesignSearchOptions options;
     options.method = method;
     options.max_design_size = problem.max_design_size;
+    options.hitting_sets = hitting_sets;
     DesignResult r = search_design(problem, evaluator, options);
     Answer a;
     a.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     a.optimal = r.optimal;
     a.limit = r.limit_reached;
     a.evaluated = r.counters.configurations_evaluated;
+    a.hitting_set_proof = std::any_of(r.notes.begin(), r.notes.end(), [](const std::string &n) {
+        return n.find("hitting-set phase") != std::string::npos;
+    });
     if (r.best) {
         a.has_best = true;
         a.design = r.best->ranked.configuration;
@@ -1158,6 +1168,53 @@ TEST(WitnessAgreement, WitnessSearchAgreesWithExhaustiveOnRandomProblems) {
     EXPECT_GE(coverage.improved, 5);
     EXPECT_GE(coverage.infinite_baselines, 2);
     EXPECT_GE(coverage.finite_objectives, static_cast<int>(seeds.size()) / 3);
+}
+
+// Problems whose modifications all restrict, up to 9 of them: the witness search proves
+// its answer with the hitting-set phase (hitting_set.h), which must agree with every subset.
+TEST(WitnessAgreement, HittingSetPhaseAgreesWithExhaustive) {
+    int seeds = seeds_from_environment();
+    int disagreements = 0, proofs = 0, non_empty_proofs = 0, improved = 0;
+    double witness_seconds = 0, exhaustive_seconds = 0;
+    for (int s = 0; s < seeds; ++s) {
+        unsigned seed = 100000u + static_cast<unsigned>(s);
+        Generated g = Generator(seed, true).run();
+        fs::path dir = directory_for(seed);
+        fs::remove_all(dir);
+        fs::path spec = write_spec(g, dir, seed % 5 == 0);
+        DesignProblem problem = load_design_problem(spec.string());
+        Answer exhaustive = search(problem, SearchMethod::EXHAUSTIVE);
+        Answer witness = search(problem, SearchMethod::WITNESS);
+        Answer best_first = search(problem, SearchMethod::WITNESS, false);
+        witness_seconds += witness.seconds, exhaustive_seconds += exhaustive.seconds;
+        if (std::getenv("ENVDESIGN_AGREEMENT_VERBOSE"))
+            std::cout << "seed " << seed << " witness " << witness.seconds << " s, exhaustive "
+                      << exhaustive.seconds << " s\n";
+        proofs += witness.hitting_set_proof;
+        non_empty_proofs += witness.hitting_set_proof && !witness.design.empty();
+        improved += exhaustive.objective < exhaustive.baseline &&
+                    !same_value(exhaustive.objective, exhaustive.baseline);
+        std::string diff = disagreement(witness, exhaustive);
+        if (std::string alone = disagreement(best_first, exhaustive); !alone.empty())
+            diff += " (best-first alone:" + alone + ")";
+        if (!diff.empty()) {
+            ++disagreements;
+            ADD_FAILURE() << "seed " << seed << ", spec " << spec.string() << ":" << diff
+                          << "\n  witness:    " << describe(witness)
+                          << "\n  exhaustive: " << describe(exhaustive);
+            continue;
+        }
+        fs::remove_all(dir);
+    }
+    std::cout << "[ agreement ] restricting only: " << seeds << " seeds, " << disagreements
+              << " disagreements; hitting-set proofs " << proofs << " (non-empty design "
+              << non_empty_proofs << "), improved " << improved << "; witness "
+              << number(witness_seconds) << " s, exhaustive " << number(exhaustive_seconds) << " s"
+              << std::endl;
+    if (seeds < 40)
+        return;
+    EXPECT_GE(proofs, seeds / 2);
+    EXPECT_GE(non_empty_proofs, seeds / 10);
 }
 
 // A directed case: a fresh predicate declared by two modifications. "rule" (people are told

@@ -1,0 +1,87 @@
+#pragma once
+// The hitting-set phase of the witness search: the least objective over every design,
+// from the human plans known so far, by an integer program (COIN-OR CBC).
+//
+// When every modification is restricting and of non-negative cost, the pooled plans of
+// witness_bound.h give each design S a relaxed objective that is a lower bound on its
+// real one: per task, the human's optimum under S is at most the cost d of the cheapest
+// known plan that S does not break, c_H(pi) is at least its value with no modification
+// (plans are only removed), so IE >= g(floor - d); the robot's cost is at least its
+// optimum with no modification when no modification relaxes the robot; design cost is
+// exact. Minimising it over all designs is a weighted hitting set with levels:
+//   minimise  sum_m beta c_m x_m + sum_t sum_j -delta_tj y_tj   (+ a constant)
+//   y_tj <= y_t(j-1),  y_tj <= sum of x_m over the breakers of each plan at level j,
+// where y_tj = 1 says task t's plans up to cost level j are all broken, and delta_tj is
+// what that saves. The phase (witness_search.cc) evaluates the design the program picks,
+// learns the plans that refute its relaxed value, and excludes it; it stops when no design
+// left has a relaxed objective within a margin of the best real one: then every design is
+// either evaluated or provably worse, and the best evaluated one is optimal, ties included.
+// The program is solved to optimality with a tight integrality tolerance; the margin
+// (1e-5 relative) absorbs the solver's own tolerances.
+
+#include "design/configuration.h"
+#include "design/deadline.h"
+#include "design/design_problem.h"
+#include "design/task_evaluation.h"
+#include "design/witness_bound.h"
+
+#include <optional>
+#include <set>
+#include <vector>
+
+namespace envdesign::design::witness {
+
+// What holds for every design, read from the empty design's evaluation.
+struct RootFacts {
+    std::vector<double> floor; // per task, c_H(pi) with no modification
+    std::vector<std::optional<double>> robot_bounds;
+    std::vector<const TaskExplicability *> settled; // tasks no modification can change
+};
+
+// An evaluated design and the designs that provably rank after it: every superset that
+// adds only modifications outside `escapes` (restricting ones touching none of its
+// witnesses) has its task values, more modifications and no less cost (witness_search.h).
+struct Cone {
+    Configuration design;
+    std::optional<std::vector<int>> escapes; // ascending; nullopt: every modification
+};
+
+class HittingSetMaster {
+public:
+    // `plans` (the pool) must outlive the master; `max_size` 0: no limit.
+    HittingSetMaster(const DesignProblem &problem, const SupersetBound &plans, RootFacts root,
+                     int max_size);
+
+    // The relaxed objective of `design` from the plans known now (<= its real objective).
+    double relaxed(const Configuration &design) const;
+
+    struct Answer {
+        enum Status { FOUND, NONE, FAILED } status = FAILED;
+        Configuration design;
+        double bound = 0; // the least relaxed objective outside the cones
+    };
+    // The design outside the cones with the least relaxed objective, if it is at most
+    // `cutoff`; NONE when every such design is above it.
+    Answer least(const std::vector<Cone> &excluded, double cutoff, const Deadline &deadline) const;
+
+    // The margin above the best objective within which designs are still evaluated.
+    static double margin(double best);
+
+private:
+    struct Level {
+        double cost;   // the plans' cost at this level
+        double saving; // what breaking them all (and those below) saves
+        std::vector<const std::vector<int> *> breakers;
+        bool breakable = true;
+    };
+    std::vector<std::vector<Level>> levels() const;
+    double level_value(int task, double human_optimum) const;
+
+    const DesignProblem &problem_;
+    const SupersetBound &plans_;
+    RootFacts root_;
+    int max_size_;
+    double constant_; // the objective's part that no design changes, at its least
+};
+
+} // namespace envdesign::design::witness

@@ -1,0 +1,213 @@
+#include "design/witness_learning.h"
+
+#include "design/hitting_set.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <map>
+
+namespace envdesign::design::witness {
+
+DesignLearner::DesignLearner(const DesignProblem &problem, Evaluator &evaluator,
+                             const DesignSearchOptions &options, const TouchIndex &index,
+                             SupersetBound &bound, DesignResult &result)
+    : problem_(problem), evaluator_(evaluator), options_(options), index_(index), bound_(bound),
+      result_(result), tasks_(static_cast<int>(problem.tasks.size())),
+      max_size_(options.max_design_size > 0 ? options.max_design_size : index.size()),
+      lower_bound_(-INF) {}
+
+void DesignLearner::evaluated(const Node &node) {
+    if (node.configuration.empty())
+        root_ = node;
+    consider(node.configuration, node.tasks);
+    known_.emplace_back(node.configuration, node.tasks);
+}
+
+// Meets each task's plans of the human's model that are cheaper than its most explicable
+// plan. A probe design breaks every such plan known (one breaker each, the one most tasks'
+// plans share); the human's optimal plan there is either another cheaper one, which joins
+// the pool, or none, and then breaking the known ones is enough.
+void DesignLearner::probe_shortcuts() {
+    if (!bound_.always().empty() || !result_.baseline)
+        return;
+    std::set<int> active;
+    for (int t = 0; t < tasks_; ++t)
+        if (problem_.tasks[t].probability > 0 &&
+            result_.baseline->tasks[t].status == ExplicabilityStatus::SOLVED)
+            active.insert(t);
+    std::set<Configuration> tried{{}};
+    for (int round = 0; round < 64 && !active.empty() && !options_.deadline.expired(); ++round) {
+        std::map<Configuration, std::vector<int>> probes; // design -> the tasks it probes
+        std::vector<int> shared(index_.size(), 0);        // how many tasks' plans each breaks
+        for (int t = 0; t < tasks_; ++t) {
+            std::set<int> mods;
+            for (const PooledPlan &plan : bound_.plans(t))
+                mods.insert(plan.breakers.begin(), plan.breakers.end());
+            for (int m : mods)
+                ++shared[m];
+        }
+        for (int t : std::set<int>(active)) {
+            // A cheap way to break every known cheaper plan: per plan not broken yet, the
+            // breaker that the most tasks' plans share.
+            double floor = result_.baseline->tasks[t].human_plan_cost;
+            std::set<int> design_set;
+            for (const PooledPlan &plan : bound_.plans(t)) {
+                if (plan.cost >= floor || !plan.needs.empty() || plan.breakers.empty() ||
+                    std::any_of(plan.breakers.begin(), plan.breakers.end(),
+                                [&](int m) { return design_set.count(m) > 0; }))
+                    continue;
+                design_set.insert(*std::max_element(
+                    plan.breakers.begin(), plan.breakers.end(), [&](int a, int b) {
+                        return shared[a] != shared[b] ? shared[a] < shared[b] : a > b;
+                    }));
+            }
+            Configuration design(design_set.begin(), design_set.end());
+            if (!tried.insert(design).second && !probes.count(design))
+                active.erase(t); // nothing new to break
+            else
+                probes[design].push_back(t);
+        }
+        for (const auto &[design, probed] : probes) {
+            if (options_.deadline.expired())
+                break;
+            if (!evaluate(design)) {
+                for (int t : probed)
+                    active.erase(t);
+                continue;
+            }
+            ++result_.counters.configurations_probed;
+            const auto &tasks = known_.back().second;
+            for (int t : probed)
+                if (!(tasks[t]->evaluation.human_optimal_cost.value_or(INF) <
+                      result_.baseline->tasks[t].human_plan_cost))
+                    active.erase(t); // no cheaper plan is left
+        }
+    }
+}
+
+// Excludes `design` and the supersets that rank after it from the hitting-set phase.
+void DesignLearner::consider(const Configuration &design, const std::vector<Record> &records) {
+    Cone cone{design, std::vector<int>{}};
+    for (int t = 0; t < tasks_ && cone.escapes; ++t) {
+        if (problem_.tasks[t].probability <= 0)
+            continue;
+        if (!records[t] || !records[t]->touch.known) {
+            cone.escapes.reset();
+            break;
+        }
+        std::vector<int> both;
+        std::set_union(cone.escapes->begin(), cone.escapes->end(), records[t]->touch.all.begin(),
+                       records[t]->touch.all.end(), std::back_inserter(both));
+        cone.escapes = std::move(both);
+    }
+    for (int m : bound_.always()) // not restricting: never in a cone (none when it applies)
+        if (cone.escapes && !contains(*cone.escapes, m))
+            cone.escapes->insert(std::upper_bound(cone.escapes->begin(), cone.escapes->end(), m),
+                                 m);
+    considered_.push_back(std::move(cone));
+}
+
+// The relaxation of hitting_set.h holds when every modification is restricting and of
+// non-negative cost (no modification is added everywhere), the weights are non-negative
+// and the empty design's objective is finite (its floors are known).
+bool DesignLearner::applies() const {
+    const ObjectiveWeights &w = problem_.weights;
+    return options_.hitting_sets && root_ && result_.best &&
+           std::isfinite(result_.best->objective.value) && bound_.always().empty() &&
+           w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 && result_.baseline &&
+           std::isfinite(result_.baseline->objective.value);
+}
+
+bool DesignLearner::prove_by_hitting_sets() {
+    if (!applies())
+        return false;
+    RootFacts facts;
+    bool robot_monotone = true;
+    for (int m = 0; m < index_.size(); ++m)
+        robot_monotone = robot_monotone && index_.of(m).robot_restricting;
+    for (int t = 0; t < tasks_; ++t) {
+        const Record &r = root_->tasks[t];
+        facts.floor.push_back(result_.baseline->tasks[t].human_plan_cost);
+        facts.robot_bounds.push_back(robot_monotone ? root_->robot_bounds[t] : std::nullopt);
+        facts.settled.push_back(r && r->touch.known && r->touch.all.empty() ? &r->evaluation
+                                                                            : nullptr);
+    }
+    HittingSetMaster master(problem_, bound_, std::move(facts), options_.max_design_size);
+    while (!options_.deadline.expired()) {
+        double best = result_.best->objective.value;
+        auto answer =
+            master.least(considered_, best + HittingSetMaster::margin(best), options_.deadline);
+        if (answer.status == HittingSetMaster::Answer::NONE) {
+            lower_bound_ = best;
+            return true;
+        }
+        if (answer.status == HittingSetMaster::Answer::FAILED)
+            return false;
+        lower_bound_ = std::min(best, answer.bound);
+        if (!evaluate(answer.design))
+            return false;
+        ++designs_;
+        ++result_.counters.configurations_evaluated;
+    }
+    return false;
+}
+
+// The record of `task` under `design` from a smaller evaluated configuration, when every
+// modification added since is restricting and touches none of its witnesses.
+Record DesignLearner::inherited(const Configuration &design, int task) const {
+    for (const auto &[configuration, records] : known_) {
+        const Record &r = records[task];
+        if (!r || !r->touch.known || configuration.size() > design.size() ||
+            !std::includes(design.begin(), design.end(), configuration.begin(),
+                           configuration.end()))
+            continue;
+        if (std::none_of(design.begin(), design.end(), [&](int m) {
+                return !contains(configuration, m) &&
+                       (!index_.of(m).restricting || contains(r->touch.all, m));
+            }))
+            return r;
+    }
+    return nullptr;
+}
+
+// Evaluates `design` in full, learns its plans and compares it with the best; false when a
+// limit or the deadline stopped it.
+bool DesignLearner::evaluate(const Configuration &design) {
+    ConfigurationEvaluation request = unevaluated(design);
+    std::vector<Record> records(tasks_);
+    request.tasks.resize(tasks_);
+    for (int t = 0; t < tasks_; ++t)
+        if ((records[t] = inherited(design, t))) {
+            request.tasks[t] = values_only(records[t]->evaluation);
+            ++result_.counters.tasks_inherited;
+        }
+    ConfigurationEvaluation answer;
+    EvaluationCallbacks callbacks;
+    callbacks.abandon = [](const ConfigurationEvaluation &) { return false; };
+    callbacks.done = [&](ConfigurationEvaluation e) { answer = std::move(e); };
+    evaluator_.evaluate({request}, options_.deadline, callbacks);
+    if (answer.status != EvaluationStatus::COMPLETE) {
+        limit_seen_ = limit_seen_ || answer.status == EvaluationStatus::LIMIT;
+        return false;
+    }
+    std::vector<TaskExplicability> tasks;
+    for (int t = 0; t < tasks_; ++t) {
+        if (!records[t]) {
+            auto record = std::make_shared<TaskRecord>();
+            record->evaluation = std::move(*answer.tasks[t]);
+            record->touch = index_.touching(design, t, record->evaluation);
+            bound_.learn(design, t, record->evaluation);
+            records[t] = std::move(record);
+        }
+        tasks.push_back(records[t]->evaluation);
+    }
+    known_.emplace_back(design, std::move(records));
+    if (static_cast<int>(design.size()) <= max_size_) {
+        consider(design, known_.back().second);
+        consider_design(problem_, design, std::move(tasks), result_);
+    }
+    return true;
+}
+
+} // namespace envdesign::design::witness

@@ -1,0 +1,65 @@
+#pragma once
+// Designs the witness search evaluates outside its best-first order, to learn the human
+// plans its bounds need and to prove optimality early (witness_search.h):
+//   - probes: per task, a design that breaks every cheaper plan known;
+//   - the hitting-set phase (hitting_set.h): the design of least relaxed objective that is
+//     not evaluated yet, until none is left within reach of the best one.
+// Every design evaluated here is a real design, compared with the best as such.
+
+#include "design/design_search.h"
+#include "design/hitting_set.h"
+#include "design/witness.h"
+#include "design/witness_bound.h"
+
+#include <set>
+#include <vector>
+
+namespace envdesign::design::witness {
+
+class DesignLearner {
+public:
+    // All must outlive the learner.
+    DesignLearner(const DesignProblem &problem, Evaluator &evaluator,
+                  const DesignSearchOptions &options, const TouchIndex &index, SupersetBound &bound,
+                  DesignResult &result);
+
+    // Remembers an evaluated configuration of the best-first search (the root first).
+    void evaluated(const Node &node);
+
+    // Evaluates a probe design per task that has cheaper plans to break, for some rounds.
+    void probe_shortcuts();
+
+    // The hitting-set phase. True when the best design is proven optimal: every design is
+    // evaluated or has a relaxed objective above the best one's.
+    bool prove_by_hitting_sets();
+
+    // A lower bound on every design's objective, from the last program solved (-inf: none).
+    double lower_bound() const { return lower_bound_; }
+    // A planner ran out of time on a design evaluated here.
+    bool limit_seen() const { return limit_seen_; }
+    long long designs() const { return designs_; }
+
+private:
+    bool applies() const;
+    bool evaluate(const Configuration &design);
+    Record inherited(const Configuration &design, int task) const;
+
+    const DesignProblem &problem_;
+    Evaluator &evaluator_;
+    const DesignSearchOptions &options_;
+    const TouchIndex &index_;
+    SupersetBound &bound_;
+    DesignResult &result_;
+    int tasks_;
+    int max_size_;
+    std::optional<Node> root_;
+    std::vector<std::pair<Configuration, std::vector<Record>>>
+        known_;                    // evaluated here or in the search
+    std::vector<Cone> considered_; // every design whose objective is known, and its cone
+    void consider(const Configuration &design, const std::vector<Record> &records);
+    double lower_bound_;
+    bool limit_seen_ = false;
+    long long designs_ = 0;
+};
+
+} // namespace envdesign::design::witness
