@@ -11,6 +11,7 @@ PACKAGES=(
     liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
     openjdk-17-jdk xvfb xauth libjchart2d-java iproute2
     cyclonedds-dev cyclonedds-tools libcycloneddsidl0
+    libsqlite3-dev libssl-dev  # the coordinator's durable evaluations (common/store)
     gnuplot-nox  # the interplay plot of tests/benchmarks/paper/run_interplay.py
 )
 
