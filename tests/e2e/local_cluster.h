@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <spdlog/sinks/null_sink.h>
+#include <sqlite3.h>
 
 #include <filesystem>
 #include <fstream>
@@ -86,9 +87,12 @@ public:
 
     // Stops the coordinator with `signal` (SIGKILL: mid-write, no goodbye) and starts it
     // again with the same flags; waits until it knows every planner again.
-    void restart_coordinator(int signal) {
+    // `between` runs while no coordinator runs.
+    void restart_coordinator(int signal, const std::function<void()> &between = {}) {
         coordinator_->signal(signal);
         coordinator_->wait();
+        if (between)
+            between();
         std::string log = "coordinator-" + std::to_string(++restarts_) + ".log";
         coordinator_ = std::make_unique<Process>(coordinator_args_, (dir_ / log).string());
         for (std::size_t i = 0; i < planners_.size(); ++i)
@@ -204,6 +208,7 @@ public:
                     binary("envdesign") + " design " + spec + " --json --connect '" + url + "' > " +
                         out_.string()},
                    (dir / (name + ".log")).string()) {}
+    bool running() { return process_.running(); }
     nlohmann::json result() {
         auto code = process_.wait(std::chrono::seconds(120));
         EXPECT_EQ(code, std::optional<int>(0)) << process_.output();
@@ -215,6 +220,23 @@ private:
     std::filesystem::path out_;
     Process process_;
 };
+
+// Records in a coordinator's evaluation file (common/store/record_db.h), read as another
+// program would: each is an answer the coordinator had received and written.
+inline long long stored_records(const std::filesystem::path &file) {
+    sqlite3 *db = nullptr;
+    long long n = -1;
+    if (sqlite3_open_v2(file.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK) {
+        sqlite3_stmt *count = nullptr;
+        if (sqlite3_prepare_v2(db, "SELECT count(*) FROM records", -1, &count, nullptr) ==
+                SQLITE_OK &&
+            sqlite3_step(count) == SQLITE_ROW)
+            n = sqlite3_column_int64(count, 0);
+        sqlite3_finalize(count);
+    }
+    sqlite3_close(db);
+    return n;
+}
 
 // What a shell command prints on stdout; `exit_code` gets its exit code.
 inline std::string command_output(const std::string &command, int *exit_code = nullptr) {
