@@ -12,6 +12,7 @@ PACKAGES=(
     openjdk-17-jdk xvfb xauth libjchart2d-java iproute2
     cyclonedds-dev cyclonedds-tools libcycloneddsidl0
     coinor-libcbc-dev  # the witness search's hitting-set phase (integer programs)
+    libsqlite3-dev libssl-dev  # the coordinator's durable evaluations (common/store)
     gnuplot-nox  # the interplay plot of tests/benchmarks/paper/run_interplay.py
 )
 

@@ -48,6 +48,7 @@ std::string number(double x) {
 Redesigner::Redesigner(DesignProblem problem, RedesignOptions options)
     : problem_(std::make_unique<DesignProblem>(std::move(problem))), options_(options),
       local_(std::make_unique<design::LocalEvaluator>(*problem_, options.workers, options.planner)),
+      store_(options.evaluations, design::store_key(*problem_, options.planner.heuristic)),
       stored_(std::make_unique<design::StoredEvaluator>(*problem_, *local_, store_)) {}
 
 Distribution Redesigner::distribution() const {

@@ -40,6 +40,8 @@ struct RedesignOptions {
     planning::PlannerOptions planner; // heuristic, limits
     int max_design_size = -1;         // < 0: the spec's
     double time_limit_s = -1;         // per redesign; < 0: the spec's; 0: none
+    // Where evaluations are kept across restarts (store/state_dir.h); null: memory only.
+    std::shared_ptr<store::RecordDb> evaluations;
 };
 
 struct DesignChange {

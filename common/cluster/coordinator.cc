@@ -5,6 +5,7 @@
 #include "cluster/design_change.h"
 #include "cluster/spec_chunks.h"
 #include "cluster/wire.h"
+#include "store/state_dir.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,11 +38,27 @@ bool progress_changed(const design_progress_t &a, const design_progress_t &b) {
            a.evaluations != b.evaluations || a.best_objective != b.best_objective;
 }
 
+// The evaluation file of config.state_dir, checked (store/state_dir.h); null without a
+// state directory. Throws store::StoreError.
+std::shared_ptr<store::RecordDb> open_evaluation_file(const CoordinatorConfig &config,
+                                                      spdlog::logger &log) {
+    if (!config.state_dir.empty() && config.stored_evaluations == 0) {
+        log.warn("request - | --state-dir ignored: --stored-evaluations 0 keeps nothing");
+        return nullptr;
+    }
+    store::RecordDbOptions options;
+    options.max_records = config.stored_evaluations;
+    options.max_bytes = config.state_max_bytes;
+    options.sync = config.state_sync;
+    return store::open_state_file(config.state_dir, options, log);
+}
+
 } // namespace
 
 Coordinator::Coordinator(bus::Bus &bus, CoordinatorConfig config)
     : bus_(bus), config_(std::move(config)), router_(bus, config_.pool, config_.instance),
-      specs_(config_.instance), stores_(config_.stored_evaluations) {
+      specs_(config_.instance),
+      stores_(config_.stored_evaluations, open_evaluation_file(config_, bus.log())) {
     subscriptions_.push_back(bus_.subscribe<design_request_t>(
         bus::REQUEST, [this](const design_request_t &r) { on_request(r); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::cancel_t>(

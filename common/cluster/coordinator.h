@@ -39,6 +39,14 @@ struct CoordinatorConfig {
     // Task evaluations and bounds kept across requests (evaluation_stores.h), each a plan
     // of a few hundred bytes; 0: none kept.
     std::size_t stored_evaluations = 200'000;
+    // Where the stored evaluations are kept across restarts (evaluations.db, SQLite);
+    // empty: in memory only. The file holds at most stored_evaluations records and
+    // state_max_bytes bytes of them.
+    std::string state_dir;
+    std::size_t state_max_bytes = std::size_t{1} << 30;
+    // fsync every commit: survives power loss too, at ~5 ms a record on a VM disk; without,
+    // a record survives the process being killed at any instant (store/record_db.h).
+    bool state_sync = false;
 };
 
 struct CoordinatorStats {

@@ -1,13 +1,14 @@
 #include "cluster/evaluation_stores.h"
 
+#include "cluster/wire.h"
+
 #include <algorithm>
 
 namespace envdesign::cluster {
 
 std::shared_ptr<design::EvaluationStore>
 EvaluationStores::store_for(const design::DesignProblem &problem, int heuristic) {
-    Key key = design::key_of_text(design::store_key(problem).hex() + " heuristic " +
-                                  std::to_string(heuristic));
+    Key key = design::store_key(problem, heuristic_kind(static_cast<std::int8_t>(heuristic)));
     std::lock_guard lock(mutex_);
     auto it = stores_.find(key);
     if (it != stores_.end()) {
@@ -15,7 +16,8 @@ EvaluationStores::store_for(const design::DesignProblem &problem, int heuristic)
         return it->second.first;
     }
     recent_.push_front(key);
-    auto store = std::make_shared<design::EvaluationStore>();
+    auto store = db_ ? std::make_shared<design::EvaluationStore>(db_, key)
+                     : std::make_shared<design::EvaluationStore>();
     stores_.emplace(key, std::make_pair(store, recent_.begin()));
     return store;
 }

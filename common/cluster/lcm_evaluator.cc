@@ -94,7 +94,10 @@ void LcmEvaluator::take(Batch &batch, const envdesign::evaluation_t &answer) {
                                      : "planner " + answer.sender + " failed: " + answer.error);
         return;
     }
-    batch.dispatcher.receive(job_answer(job, answer));
+    design::JobAnswer taken = job_answer(job, answer);
+    if (sink_)
+        sink_(batch.configurations[job.configuration].configuration, taken);
+    batch.dispatcher.receive(std::move(taken));
 }
 
 // Stops waiting: every job still out counts as out of time.

@@ -15,6 +15,7 @@
 #include "design/evaluator.h"
 
 #include <atomic>
+#include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -53,6 +54,11 @@ public:
     design::EvaluatorCounters counters() const override;
 
     void wake() { inbox_.wake(); }
+    // Called with every answer as it arrives, before the search sees it (a durable store
+    // keeps it there: design/stored_evaluator.h); same thread as evaluate().
+    using AnswerSink =
+        std::function<void(const design::Configuration &, const design::JobAnswer &)>;
+    void on_answer(AnswerSink sink) { sink_ = std::move(sink); }
     // Sends, re-sends, duplicates and planners of this evaluator's jobs.
     PoolCounters transport() const { return router_.pool().counters(owner_); }
     long long answers() const { return answers_.load(); }
@@ -89,6 +95,7 @@ private:
     std::uint64_t owner_;
     design::EvaluatorCounters counters_;
     std::optional<RemoteError> error_;
+    AnswerSink sink_;
     double transport_seconds_ = 0;
     double job_seconds_ = 0;
     std::atomic<long long> answers_{0};

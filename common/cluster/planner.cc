@@ -42,7 +42,8 @@ private:
 };
 
 Planner::Planner(bus::Bus &bus, PlannerConfig config)
-    : bus_(bus), config_(std::move(config)), specs_(config_.work_dir, config_.max_specs) {
+    : bus_(bus), config_(std::move(config)), specs_(config_.work_dir, config_.max_specs),
+      memory_(static_cast<std::size_t>(std::max(0, config_.remembered_answers))) {
     subscriptions_.push_back(bus_.subscribe<envdesign::job_t>(
         bus::JOB, [this](const envdesign::job_t &job) { on_job(job); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::spec_chunk_t>(
@@ -88,6 +89,14 @@ void Planner::drop_stale_parked(Clock::time_point now) {
                 }
                 held_.erase(job->job.job_id);
                 dropped.push_back(job->job);
+                auto waiting = followers_.find(job_content(job->job)); // lack the spec too
+                if (waiting != followers_.end()) {
+                    for (const auto &follower : waiting->second) {
+                        held_.erase(follower.job_id);
+                        dropped.push_back(follower);
+                    }
+                    followers_.erase(waiting);
+                }
                 job = jobs.erase(job);
             }
             if (jobs.empty()) {
@@ -135,6 +144,19 @@ void Planner::on_job(const envdesign::job_t &job) {
         ++stats_.duplicates;
         return;
     }
+    std::string content = job_content(job);
+    if (auto kept = memory_.find(content)) {
+        held_.erase(job.job_id);
+        ++stats_.answers_remembered;
+        lock.unlock();
+        bus_.publish(bus::EVALUATION, readdressed(*kept, job, config_.instance));
+        return;
+    }
+    if (auto leader = followers_.find(content); leader != followers_.end()) {
+        leader->second.push_back(job); // answered with the job computing the same content
+        return;
+    }
+    followers_[content]; // this job computes it
     Pending pending{job, Clock::now()};
     if (specs_.complete(job.spec_hash)) {
         queue_.push_back(std::move(pending));
@@ -245,15 +267,54 @@ void Planner::work() {
         answer.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         answer.queued_seconds = std::chrono::duration<double>(start - pending.received).count();
         bus_.publish(bus::EVALUATION, answer);
-        answered(answer, answer.seconds);
+        auto shared = answered(pending.job, answer);
+        for (const auto &a : shared)
+            bus_.publish(bus::EVALUATION, a);
+        release(shared);
     }
 }
 
-void Planner::answered(const envdesign::evaluation_t &answer, double seconds) {
+std::vector<envdesign::evaluation_t> Planner::answered(const envdesign::job_t &job,
+                                                       const envdesign::evaluation_t &answer) {
+    std::vector<envdesign::evaluation_t> shared;
+    {
+        std::lock_guard lock(mutex_);
+        held_.erase(answer.job_id); // after publishing: a heartbeat never misses a job between
+        ++stats_.jobs_done;
+        stats_.busy_seconds += answer.seconds;
+        remember_by_id(answer);
+        std::string content = job_content(job);
+        memory_.keep(content, answer);
+        auto it = followers_.find(content);
+        if (it == followers_.end())
+            return shared;
+        std::vector<envdesign::job_t> waiting = std::move(it->second);
+        followers_.erase(it);
+        if (AnswerMemory::keepable(answer)) {
+            for (const auto &follower : waiting)
+                shared.push_back(readdressed(answer, follower, config_.instance));
+            stats_.answers_remembered += static_cast<long long>(waiting.size());
+            return shared;
+        }
+        if (waiting.empty())
+            return shared;
+        // Out of time (or failed): the waiting jobs had their own time; the first computes.
+        queue_.push_back({waiting.front(), Clock::now()});
+        followers_[content].assign(waiting.begin() + 1, waiting.end());
+    }
+    work_ready_.notify_one();
+    return shared;
+}
+
+void Planner::release(const std::vector<envdesign::evaluation_t> &answers) {
     std::lock_guard lock(mutex_);
-    held_.erase(answer.job_id); // after publishing: a heartbeat never misses a job in between
-    ++stats_.jobs_done;
-    stats_.busy_seconds += seconds;
+    for (const auto &answer : answers) {
+        held_.erase(answer.job_id);
+        remember_by_id(answer);
+    }
+}
+
+void Planner::remember_by_id(const envdesign::evaluation_t &answer) {
     answers_[answer.job_id] = answer;
     answer_order_.push_back(answer.job_id);
     while (static_cast<int>(answer_order_.size()) > config_.answers_kept) {

@@ -10,6 +10,10 @@
 //     (the coordinator has long sent it elsewhere).
 //   - A job it holds already is a duplicate and ignored; one it answered lately (the answer
 //     was lost) is answered again from memory.
+//   - Answers are also remembered by content (answer_memory.h): a job whose spec, kind,
+//     heuristic, task and configuration were answered lately is answered at once, whoever
+//     sends it (a restarted coordinator re-sends what it had in flight); one whose content
+//     is being worked on waits for that answer instead of computing it again.
 //   - Each worker has its own plan cache per spec, so a job's counters are its own.
 //
 //   Planner planner(bus, config);
@@ -17,6 +21,7 @@
 //   planner.stop();   // a last heartbeat says it is going; running jobs finish
 
 #include "bus/bus.h"
+#include "cluster/answer_memory.h"
 #include "cluster/planner_specs.h"
 #include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"
@@ -37,13 +42,15 @@ struct PlannerConfig {
     double need_retry_s = 0.3;
     double park_limit_s = 30; // a job whose spec never comes is dropped after this
     int max_specs = 4;
-    int answers_kept = 4096;
+    int answers_kept = 4096;         // by job id, for re-sent jobs
+    int remembered_answers = 16'384; // by content (answer_memory.h), each about a plan's size
 };
 
 struct PlannerStats {
     long long jobs_done = 0;
-    long long answers_repeated = 0; // answers sent again from memory
-    long long duplicates = 0;       // jobs received while held
+    long long answers_repeated = 0;   // answers sent again from memory (same job id)
+    long long answers_remembered = 0; // jobs answered by content, without computing
+    long long duplicates = 0;         // jobs received while held
     double busy_seconds = 0;
 };
 
@@ -70,7 +77,12 @@ private:
     void heartbeat(bool stopping);
     void work();
     envdesign::evaluation_t evaluate(const Pending &pending, class WorkerCaches &caches);
-    void answered(const envdesign::evaluation_t &answer, double seconds);
+    // Bookkeeping after `job`'s answer was published; returns the answers of the jobs that
+    // waited for the same content, to publish and then release().
+    std::vector<envdesign::evaluation_t> answered(const envdesign::job_t &job,
+                                                  const envdesign::evaluation_t &answer);
+    void release(const std::vector<envdesign::evaluation_t> &answers);
+    void remember_by_id(const envdesign::evaluation_t &answer);
 
     bus::Bus &bus_;
     PlannerConfig config_;
@@ -84,6 +96,10 @@ private:
     std::set<std::int64_t> held_;
     std::map<std::int64_t, envdesign::evaluation_t> answers_;
     std::deque<std::int64_t> answer_order_;
+    AnswerMemory memory_;
+    // Content -> jobs waiting for it; a key is present while its first job (the one that
+    // computes) is queued, parked or running.
+    std::map<std::string, std::vector<envdesign::job_t>> followers_;
     PlannerStats stats_;
     bool closing_ = false;
     std::atomic<bool> stopping_{false};

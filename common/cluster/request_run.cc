@@ -127,6 +127,13 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     std::optional<design::StoredEvaluator> stored;
     if (store)
         stored.emplace(problem, evaluator, *store);
+    if (store && store->durable()) // each answer on disk before the search uses it
+        evaluator.on_answer([&](const design::Configuration &c, const design::JobAnswer &a) {
+            if (a.job.kind == design::JobKind::ROBOT_BOUND && a.robot_bound)
+                stored->keep_robot_bound(c, a.job.task, *a.robot_bound);
+            else if (a.job.kind == design::JobKind::EXPLICABILITY)
+                stored->keep_task(c, a.job.task, a.explicability);
+        });
     design::Evaluator &searched = stored ? static_cast<design::Evaluator &>(*stored) : evaluator;
     design::DesignResult result;
     try {

@@ -1,5 +1,6 @@
 #include "design/evaluation_store.h"
 
+#include "design/evaluation_record.h"
 #include "design/lifted_key.h"
 
 #include <sstream>
@@ -8,8 +9,9 @@ namespace envdesign::design {
 
 TaskKey store_key(const DesignProblem &problem) {
     std::ostringstream text;
-    text << lifted_key(problem.robot_domain, {}).hex() << ' '
-         << lifted_key(problem.human_domain, {}).hex() << ' '
+    text << "envdesign store key " << RECORD_VERSION << '\n'
+         << lifted_text(problem.robot_domain, {}) << "\n--\n"
+         << lifted_text(problem.human_domain, {}) << "\n--\n"
          << static_cast<int>(problem.weights.distance) << '\n';
     for (const auto &m : problem.modifications) {
         text << m.edits.size() << ':';
@@ -18,22 +20,34 @@ TaskKey store_key(const DesignProblem &problem) {
                  << e.action.size() << '#' << e.action << ',' << e.expression.to_string() << ';';
         text << '\n';
     }
-    return key_of_text(text.str());
+    return digest_key(text.str());
+}
+
+TaskKey store_key(const DesignProblem &problem, heuristics::HeuristicKind heuristic) {
+    return digest_key(store_key(problem).hex() + " heuristic " +
+                      std::to_string(static_cast<int>(heuristic)));
 }
 
 TaskKey task_key(const DesignProblem &problem, int task) {
     const DesignTask &t = problem.tasks[task];
-    return key_of_text(lifted_key(problem.robot_domain, t.robot_problem).hex() +
-                       lifted_key(problem.human_domain, t.human_problem).hex());
+    return digest_key("envdesign task key " + std::to_string(RECORD_VERSION) + "\n" +
+                      lifted_text(problem.robot_domain, t.robot_problem) + "\n--\n" +
+                      lifted_text(problem.human_domain, t.human_problem));
 }
 
 std::optional<TaskExplicability> EvaluationStore::find(const Configuration &configuration,
                                                        const TaskKey &task) const {
     std::lock_guard lock(mutex_);
     auto it = entries_.find({configuration, task});
-    if (it == entries_.end())
+    if (it != entries_.end())
+        return it->second;
+    if (!db_)
         return std::nullopt;
-    return it->second;
+    auto bytes = db_->get(record_name(RecordKind::EXPLICABILITY, scope_, configuration, task));
+    auto evaluation = bytes ? decode_evaluation(*bytes) : std::nullopt;
+    if (evaluation)
+        entries_.emplace(std::make_pair(configuration, task), *evaluation);
+    return evaluation;
 }
 
 void EvaluationStore::keep(const Configuration &configuration, const TaskKey &task,
@@ -41,22 +55,38 @@ void EvaluationStore::keep(const Configuration &configuration, const TaskKey &ta
     if (evaluation.status == ExplicabilityStatus::LIMIT)
         return;
     std::lock_guard lock(mutex_);
-    entries_.insert_or_assign({configuration, task}, evaluation);
+    auto key = std::make_pair(configuration, task);
+    // In memory already: written (or read) before. Written first, so that what memory
+    // holds (and the search uses) is in the file.
+    if (db_ && !entries_.count(key))
+        db_->put(record_name(RecordKind::EXPLICABILITY, scope_, configuration, task),
+                 encode_evaluation(evaluation));
+    entries_.insert_or_assign(key, evaluation);
 }
 
 std::optional<double> EvaluationStore::find_robot_bound(const Configuration &configuration,
                                                         const TaskKey &task) const {
     std::lock_guard lock(mutex_);
     auto it = robot_bounds_.find({configuration, task});
-    if (it == robot_bounds_.end())
+    if (it != robot_bounds_.end())
+        return it->second;
+    if (!db_)
         return std::nullopt;
-    return it->second;
+    auto bytes = db_->get(record_name(RecordKind::ROBOT_BOUND, scope_, configuration, task));
+    auto bound = bytes ? decode_robot_bound(*bytes) : std::nullopt;
+    if (bound)
+        robot_bounds_.emplace(std::make_pair(configuration, task), *bound);
+    return bound;
 }
 
 void EvaluationStore::keep_robot_bound(const Configuration &configuration, const TaskKey &task,
                                        double bound) {
     std::lock_guard lock(mutex_);
-    robot_bounds_.insert_or_assign({configuration, task}, bound);
+    auto key = std::make_pair(configuration, task);
+    if (db_ && !robot_bounds_.count(key))
+        db_->put(record_name(RecordKind::ROBOT_BOUND, scope_, configuration, task),
+                 encode_robot_bound(bound));
+    robot_bounds_.insert_or_assign(key, bound);
 }
 
 void EvaluationStore::forget(const TaskKey &task) {

@@ -14,13 +14,24 @@
 // the bounds abandoned once can be abandoned again without a planner.
 // One EvaluationStore holds the entries of one store key; its owner keeps one per key (a
 // Redesigner has one; the coordinator a map of them, cluster/evaluation_stores.h).
+//
+// Durable stores: given a RecordDb (store/record_db.h) and a scope (store_key with the
+// heuristic), every entry kept is written to the file before keep() returns, and find()
+// looks in the file for what memory lacks (evaluation_record.h names the records), so a
+// restarted process finds what an earlier one kept. Memory holds what was kept or found
+// since; the file is bounded by the RecordDb, memory by the owner (forget, or dropping the
+// store). Keys are SHA-256 digests of the models' canonical text (lifted_key.h).
 // Thread-safe.
 
 #include "design/configuration.h"
 #include "design/explicability.h"
 #include "design/ground_key.h"
 
+#include "heuristics/heuristic.h"
+#include "store/record_db.h"
+
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <utility>
@@ -28,10 +39,18 @@
 namespace envdesign::design {
 
 TaskKey store_key(const DesignProblem &problem);
+// The store key of evaluations made with `heuristic` (it picks among plans of equal cost,
+// so its plans are its own): the scope of a durable store.
+TaskKey store_key(const DesignProblem &problem, heuristics::HeuristicKind heuristic);
 TaskKey task_key(const DesignProblem &problem, int task);
 
 class EvaluationStore {
 public:
+    EvaluationStore() = default; // in memory only
+    // Backed by `db` (shared with other scopes); `scope` is store_key(problem, heuristic).
+    EvaluationStore(std::shared_ptr<store::RecordDb> db, const TaskKey &scope)
+        : db_(std::move(db)), scope_(scope) {}
+
     std::optional<TaskExplicability> find(const Configuration &configuration,
                                           const TaskKey &task) const;
     // Keeps SOLVED and INEXPLICABLE answers; LIMIT says nothing and is not kept.
@@ -42,15 +61,20 @@ public:
     std::optional<double> find_robot_bound(const Configuration &configuration,
                                            const TaskKey &task) const;
     void keep_robot_bound(const Configuration &configuration, const TaskKey &task, double bound);
-    // Forgets every evaluation and bound of one task.
+    // Forgets every evaluation and bound of one task, in memory (records in the file stay
+    // true: they are named by content).
     void forget(const TaskKey &task);
-    std::size_t size() const;    // evaluations
-    std::size_t records() const; // evaluations and bounds
+    std::size_t size() const;    // evaluations in memory
+    std::size_t records() const; // evaluations and bounds in memory
+    bool durable() const { return db_ != nullptr; }
 
 private:
+    std::shared_ptr<store::RecordDb> db_;
+    TaskKey scope_;
     mutable std::mutex mutex_;
-    std::map<std::pair<Configuration, TaskKey>, TaskExplicability> entries_;
-    std::map<std::pair<Configuration, TaskKey>, double> robot_bounds_;
+    // Mutable: find() copies what it read from the file here.
+    mutable std::map<std::pair<Configuration, TaskKey>, TaskExplicability> entries_;
+    mutable std::map<std::pair<Configuration, TaskKey>, double> robot_bounds_;
 };
 
 } // namespace envdesign::design

@@ -74,11 +74,15 @@ void write_problem(std::ostream &out, const pddl::Problem &p) {
 
 } // namespace
 
-TaskKey lifted_key(const pddl::Domain &domain, const pddl::Problem &problem) {
+std::string lifted_text(const pddl::Domain &domain, const pddl::Problem &problem) {
     std::ostringstream out;
     write_domain(out, domain);
     write_problem(out, problem);
-    return key_of_text(out.str());
+    return out.str();
+}
+
+TaskKey lifted_key(const pddl::Domain &domain, const pddl::Problem &problem) {
+    return key_of_text(lifted_text(domain, problem));
 }
 
 } // namespace envdesign::design

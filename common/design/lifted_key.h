@@ -12,5 +12,8 @@
 namespace envdesign::design {
 
 TaskKey lifted_key(const pddl::Domain &domain, const pddl::Problem &problem);
+// The canonical text lifted_key hashes (evaluation_store.h names durable records by a
+// SHA-256 of it).
+std::string lifted_text(const pddl::Domain &domain, const pddl::Problem &problem);
 
 } // namespace envdesign::design

@@ -24,6 +24,15 @@ std::optional<TaskExplicability> StoredEvaluator::find(const Configuration &conf
     return store_.find(configuration, key(task));
 }
 
+void StoredEvaluator::keep_task(const Configuration &configuration, int task,
+                                const TaskExplicability &evaluation) {
+    store_.keep(configuration, key(task), evaluation);
+}
+
+void StoredEvaluator::keep_robot_bound(const Configuration &configuration, int task, double bound) {
+    store_.keep_robot_bound(configuration, key(task), bound);
+}
+
 // What the store adds to what the search already knows (status COMPLETE when every task
 // is known).
 ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluation &request) {

@@ -46,6 +46,13 @@ public:
     // Configurations answered from the store (complete, or abandoned on stored knowledge).
     long long stored_answers() const { return stored_answers_; }
 
+    // Stores one answer of the inner evaluator as it arrives, before its configuration is
+    // done (an evaluator over a network calls these, so that a durable store holds every
+    // answer even if the process dies mid-configuration). Same thread as evaluate().
+    void keep_task(const Configuration &configuration, int task,
+                   const TaskExplicability &evaluation);
+    void keep_robot_bound(const Configuration &configuration, int task, double bound);
+
 private:
     const TaskKey &key(int task);
     // What the store knows of `configuration` (status COMPLETE when every task is known).

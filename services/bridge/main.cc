@@ -5,6 +5,7 @@
 
 #include "pddl/parse_error.h"
 #include "service_main.h"
+#include "store/state_dir.h"
 
 #include <iostream>
 
@@ -15,6 +16,7 @@ using namespace envdesign;
 struct Flags {
     std::vector<std::string> problems; // ID=SPEC
     std::string mode = "local", estimator = "window:200", heuristic = "lmcut";
+    std::string state_dir;
 };
 
 void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
@@ -62,6 +64,9 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
         ->check(CLI::Range(1, 256));
     app.add_option("--heuristic", f.heuristic, "lmcut | hmax | blind")
         ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+    app.add_option("--state-dir", f.state_dir,
+                   "keep evaluations in DIR/evaluations.db across restarts (--redesign local)")
+        ->check(CLI::ExistingDirectory);
     app.add_option("--time-limit", c.local.time_limit_s,
                    "seconds per re-evaluation (default: the spec's)");
 }
@@ -103,6 +108,12 @@ int main(int argc, char **argv) {
         return *code;
     return services::serve("bridge", common, [&](services::Service &service) {
         config.instance = service.instance;
+        if (config.mode == bridge::Mode::LOCAL) {
+            store::RecordDbOptions options;
+            options.sync = false; // survives a killed bridge; --state-fsync is the coordinator's
+            config.local.evaluations =
+                store::open_state_file(flags.state_dir, options, *service.log);
+        }
         try {
             bridge::Bridge bridge(*service.bus, config);
             return services::run_until_signal(service, [&] { bridge.tick(); });

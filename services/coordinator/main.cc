@@ -30,10 +30,23 @@ int main(int argc, char **argv) {
                    "task evaluations kept across requests (re-weighted when only the task "
                    "distribution or weights change; 0: none)")
         ->capture_default_str();
+    app.add_option("--state-dir", config.state_dir,
+                   "keep the stored evaluations in DIR/evaluations.db across restarts "
+                   "(default: in memory only)")
+        ->check(CLI::ExistingDirectory);
+    std::size_t state_max_mb = config.state_max_bytes >> 20;
+    app.add_option("--state-max-mb", state_max_mb,
+                   "bound on the evaluation file's records, in MiB (least recently used go)")
+        ->check(CLI::Range(1, 1 << 20))
+        ->capture_default_str();
+    app.add_flag("--state-fsync", config.state_sync,
+                 "fsync the evaluation file at every record (survives power loss, not only a "
+                 "killed process; slower)");
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))
         return *code;
+    config.state_max_bytes = state_max_mb << 20;
     return services::serve("coordinator", common, [&](services::Service &service) {
         config.instance = service.instance;
         cluster::Coordinator coordinator(*service.bus, config);

@@ -20,6 +20,10 @@ int main(int argc, char **argv) {
     app.add_option("--max-specs", config.max_specs, "specs kept loaded")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    app.add_option("--remembered-answers", config.remembered_answers,
+                   "answers remembered by content, for any coordinator's jobs (0: none)")
+        ->check(CLI::Range(0, 10'000'000))
+        ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))

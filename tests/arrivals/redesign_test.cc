@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace envdesign::arrivals {
 namespace {
@@ -50,6 +52,33 @@ TEST(Redesign, FirstRunIsTheSpecsDesign) {
     EXPECT_FALSE(first.change.changed);
     EXPECT_TRUE(std::isnan(first.change.objective_before));
     EXPECT_GT(first.change.planner_runs, 0);
+}
+
+// A bridge restarted on the same state directory (--state-dir) re-weights what its
+// predecessor evaluated: a drift after the restart costs no planner run.
+TEST(Redesign, ARestartedRedesignerFindsItsEvaluationsInTheStateFile) {
+    auto dir = std::filesystem::temp_directory_path() /
+               ("envdesign-redesign-state-" + std::to_string(getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    auto open = [&] {
+        store::RecordDbOptions options;
+        options.sync = false;
+        return std::make_shared<store::RecordDb>((dir / "evaluations.db").string(), options);
+    };
+    RedesignOptions options;
+    options.evaluations = open();
+    {
+        Redesigner before(design::load_design_problem(SPEC), options);
+        EXPECT_GT(before.redesign(g1(0.9), {}).change.planner_runs, 0);
+        EXPECT_GT(before.redesign(g1(0.1), {}).change.planner_runs, 0);
+    }
+    options.evaluations = open(); // the process restarted
+    Redesigner after(design::load_design_problem(SPEC), options);
+    Redesign again = after.redesign(g1(0.1), {});
+    EXPECT_EQ(again.change.planner_runs, 0);
+    EXPECT_EQ(names(after, again.result), names(after, fresh(g1(0.1))));
+    std::filesystem::remove_all(dir);
 }
 
 // 0.9 -> 0.1 flips the design to barrier-00-01, as a fresh search says; the old design

@@ -5,6 +5,9 @@
 
 #include "cluster/evaluation_stores.h"
 
+#include <filesystem>
+#include <unistd.h>
+
 namespace envdesign::cluster::testing {
 namespace {
 
@@ -60,6 +63,34 @@ TEST_F(EvaluationStoresTest, TrimDropsTheLeastRecentlyUsed) {
     EXPECT_EQ(stores.store_for(restaurant, 0), first);
     EXPECT_EQ(stores.store_for(restaurant, 0)->find({1}, key)->ie, 2);
     EXPECT_EQ(stores.store_for(blocks, 0)->size(), 0u); // made anew
+}
+
+// With a state file, a new set of stores (a restarted coordinator) finds what the old one
+// kept, in the store of the same models and heuristic only.
+TEST_F(EvaluationStoresTest, StoresOverAStateFileOutliveTheirProcess) {
+    auto dir =
+        std::filesystem::temp_directory_path() / ("envdesign-stores-" + std::to_string(getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    auto open = [&] {
+        store::RecordDbOptions options;
+        options.sync = false;
+        return std::make_shared<store::RecordDb>((dir / "evaluations.db").string(), options);
+    };
+    auto key = design::task_key(restaurant, 0);
+    {
+        EvaluationStores before(100, open());
+        before.store_for(restaurant, 0)->keep({1}, key, solved(5));
+        before.store_for(restaurant, 0)->keep_robot_bound({1}, key, 6);
+    }
+    EvaluationStores after(100, open());
+    auto store = after.store_for(restaurant, 0);
+    ASSERT_TRUE(store->find({1}, key));
+    EXPECT_EQ(store->find({1}, key)->ie, 5);
+    EXPECT_EQ(store->find_robot_bound({1}, key), 6);
+    EXPECT_FALSE(after.store_for(restaurant, 1)->find({1}, key)); // another heuristic
+    EXPECT_FALSE(store->find({0}, key));
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace

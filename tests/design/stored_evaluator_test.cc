@@ -36,6 +36,11 @@ TEST(StoreKey, IgnoresWhatOnlyWeighs) {
     DesignProblem d = a;
     std::swap(d.modifications[0], d.modifications[1]); // indices mean other edits
     EXPECT_FALSE(store_key(a) == store_key(d));
+    // The heuristic picks among plans of equal cost: its evaluations are its own.
+    EXPECT_EQ(store_key(a, heuristics::HeuristicKind::LMCUT),
+              store_key(b, heuristics::HeuristicKind::LMCUT));
+    EXPECT_FALSE(store_key(a, heuristics::HeuristicKind::LMCUT) ==
+                 store_key(a, heuristics::HeuristicKind::HMAX));
 }
 
 // A second problem with the same content (a task renamed, other weights) searched with a

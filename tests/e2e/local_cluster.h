@@ -12,8 +12,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <spdlog/sinks/null_sink.h>
+#include <sqlite3.h>
 
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -76,9 +79,26 @@ public:
                                          "--planner-timeout",
                                          "0.5"};
         args.insert(args.end(), coordinator_flags.begin(), coordinator_flags.end());
+        coordinator_args_ = args;
         coordinator_ = std::make_unique<Process>(args, (dir_ / "coordinator.log").string());
         for (int i = 0; i < planners; ++i)
             add_planner();
+    }
+
+    // Stops the coordinator with `signal` (SIGKILL: mid-write, no goodbye) and starts it
+    // again with the same flags; waits until it knows every planner again.
+    // `between` runs while no coordinator runs.
+    void restart_coordinator(int signal, const std::function<void()> &between = {}) {
+        coordinator_->signal(signal);
+        coordinator_->wait();
+        if (between)
+            between();
+        std::string log = "coordinator-" + std::to_string(++restarts_) + ".log";
+        coordinator_ = std::make_unique<Process>(coordinator_args_, (dir_ / log).string());
+        for (std::size_t i = 0; i < planners_.size(); ++i)
+            EXPECT_TRUE(coordinator_knows("planner-" + std::to_string(i)))
+                << "planner-" << i << " never joined the restarted coordinator\n"
+                << logs();
     }
     ~LocalCluster() {
         planners_.clear();
@@ -126,9 +146,97 @@ private:
     std::string url_;
     std::filesystem::path dir_;
     HeartbeatWatcher watcher_{url_};
+    std::vector<std::string> coordinator_args_;
+    int restarts_ = 0;
     std::unique_ptr<Process> coordinator_;
     std::vector<std::unique_ptr<Process>> planners_;
 };
+
+// The planners' own counts, from their heartbeats: jobs computed (jobs_done) and held.
+class HeartbeatTally {
+public:
+    explicit HeartbeatTally(const std::string &url)
+        : bus_(url, std::make_shared<spdlog::logger>(
+                        "tally", std::make_shared<spdlog::sinks::null_sink_mt>())) {
+        sub_ = bus_.subscribe<envdesign::planner_heartbeat_t>(
+            bus::HEARTBEAT, [this](const envdesign::planner_heartbeat_t &b) {
+                last_[b.sender] = {b.jobs_done, b.num_jobs};
+                ++beats_;
+            });
+    }
+    // Listens until `done` returns true (or `timeout_s` passes); true if it did.
+    bool until(const std::function<bool()> &done, double timeout_s = 60) {
+        auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+        while (!done() && std::chrono::steady_clock::now() < end)
+            bus_.handle(std::chrono::milliseconds(5));
+        return done();
+    }
+    // Listens for `seconds` (the last heartbeats of work just finished).
+    void settle(double seconds = 0.5) {
+        auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        until([&] { return std::chrono::steady_clock::now() >= end; });
+    }
+    long long done() const {
+        long long total = 0;
+        for (const auto &[name, counts] : last_)
+            total += counts.first;
+        return total;
+    }
+    long long held() const {
+        long long total = 0;
+        for (const auto &[name, counts] : last_)
+            total += counts.second;
+        return total;
+    }
+    long long beats() const { return beats_; }
+
+private:
+    bus::Bus bus_;
+    bus::Subscription sub_;
+    std::map<std::string, std::pair<long long, long long>> last_;
+    long long beats_ = 0;
+};
+
+// `envdesign design SPEC --connect URL --json` in the background (the CLI re-sends the
+// request when it hears nothing, e.g. across a coordinator's restart).
+class CliRun {
+public:
+    CliRun(const std::string &url, const std::string &spec, const std::filesystem::path &dir,
+           const std::string &name)
+        : out_(dir / (name + ".json")),
+          process_({"/bin/bash", "-c",
+                    binary("envdesign") + " design " + spec + " --json --connect '" + url + "' > " +
+                        out_.string()},
+                   (dir / (name + ".log")).string()) {}
+    bool running() { return process_.running(); }
+    nlohmann::json result() {
+        auto code = process_.wait(std::chrono::seconds(120));
+        EXPECT_EQ(code, std::optional<int>(0)) << process_.output();
+        std::ifstream in(out_);
+        return nlohmann::json::parse(in);
+    }
+
+private:
+    std::filesystem::path out_;
+    Process process_;
+};
+
+// Records in a coordinator's evaluation file (common/store/record_db.h), read as another
+// program would: each is an answer the coordinator had received and written.
+inline long long stored_records(const std::filesystem::path &file) {
+    sqlite3 *db = nullptr;
+    long long n = -1;
+    if (sqlite3_open_v2(file.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK) {
+        sqlite3_stmt *count = nullptr;
+        if (sqlite3_prepare_v2(db, "SELECT count(*) FROM records", -1, &count, nullptr) ==
+                SQLITE_OK &&
+            sqlite3_step(count) == SQLITE_ROW)
+            n = sqlite3_column_int64(count, 0);
+        sqlite3_finalize(count);
+    }
+    sqlite3_close(db);
+    return n;
+}
 
 // What a shell command prints on stdout; `exit_code` gets its exit code.
 inline std::string command_output(const std::string &command, int *exit_code = nullptr) {

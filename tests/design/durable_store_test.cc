@@ -1,0 +1,145 @@
+// Durable evaluation stores (evaluation_store.h over store/record_db.h): records that read
+// back as written, names that change with what the record means, and a search answered from
+// a file another store wrote.
+
+#include "design/design_search.h"
+#include "design/design_spec.h"
+#include "design/evaluation_record.h"
+#include "design/local_evaluator.h"
+#include "design/stored_evaluator.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace envdesign::design {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string SPEC =
+    std::string(ENVDESIGN_TEST_DATA) + "/../arrivals/data/restaurant-drift.textproto";
+
+TaskExplicability solved() {
+    TaskExplicability e;
+    e.status = ExplicabilityStatus::SOLVED;
+    e.ie = 2.718281828459045;
+    e.robot_cost = 7;
+    e.human_plan_cost = 6;
+    e.human_optimal_cost = 5;
+    e.plan = {"(move c00 c10)", "(move c10 c11)"};
+    e.human_plan = std::vector<std::string>{"(move c00 c01)"};
+    return e;
+}
+
+void expect_equal(const TaskExplicability &a, const TaskExplicability &b) {
+    EXPECT_EQ(a.status, b.status);
+    EXPECT_EQ(a.ie, b.ie);
+    EXPECT_EQ(a.robot_cost, b.robot_cost);
+    EXPECT_EQ(a.human_plan_cost, b.human_plan_cost);
+    EXPECT_EQ(a.human_optimal_cost, b.human_optimal_cost);
+    EXPECT_EQ(a.plan, b.plan);
+    EXPECT_EQ(a.human_plan, b.human_plan);
+}
+
+TEST(EvaluationRecord, ReadsBackWhatWasWritten) {
+    expect_equal(*decode_evaluation(encode_evaluation(solved())), solved());
+    TaskExplicability none; // P_mod has no plan: infinities, no human plan known
+    none.status = ExplicabilityStatus::INEXPLICABLE;
+    none.human_optimal_cost = INF;
+    expect_equal(*decode_evaluation(encode_evaluation(none)), none);
+    EXPECT_EQ(decode_robot_bound(encode_robot_bound(12.5)), 12.5);
+    EXPECT_EQ(decode_robot_bound(encode_robot_bound(INF)), INF);
+}
+
+TEST(EvaluationRecord, RefusesWhatItDidNotWrite) {
+    std::string bytes = encode_evaluation(solved());
+    EXPECT_FALSE(decode_evaluation(bytes.substr(0, bytes.size() - 1))); // cut short
+    EXPECT_FALSE(decode_evaluation(bytes + "x"));                       // trailing bytes
+    std::string other_version = bytes;
+    other_version[0] = static_cast<char>(RECORD_VERSION + 1);
+    EXPECT_FALSE(decode_evaluation(other_version));
+    EXPECT_FALSE(decode_robot_bound(bytes)); // a record of the other kind
+    EXPECT_FALSE(decode_evaluation(encode_robot_bound(3)));
+}
+
+TEST(EvaluationRecord, NamesChangeWithWhatTheRecordMeans) {
+    TaskKey scope = digest_key("scope"), task = digest_key("task");
+    auto name = record_name(RecordKind::EXPLICABILITY, scope, {0, 2}, task);
+    EXPECT_EQ(name, record_name(RecordKind::EXPLICABILITY, scope, {0, 2}, task));
+    EXPECT_NE(name, record_name(RecordKind::ROBOT_BOUND, scope, {0, 2}, task));
+    EXPECT_NE(name, record_name(RecordKind::EXPLICABILITY, digest_key("x"), {0, 2}, task));
+    EXPECT_NE(name, record_name(RecordKind::EXPLICABILITY, scope, {0, 1}, task));
+    EXPECT_NE(name, record_name(RecordKind::EXPLICABILITY, scope, {2}, task));
+    EXPECT_NE(name, record_name(RecordKind::EXPLICABILITY, scope, {0, 2}, digest_key("y")));
+}
+
+class DurableStoreTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("envdesign-durable-store-" + std::to_string(getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    void TearDown() override { fs::remove_all(dir); }
+    std::shared_ptr<store::RecordDb> open() {
+        store::RecordDbOptions options;
+        options.sync = false;
+        return std::make_shared<store::RecordDb>((dir / "evaluations.db").string(), options);
+    }
+    fs::path dir;
+};
+
+// A search over a durable store; the process "restarts" (new file handle, new store, new
+// evaluator): the same problem is answered from the file without a planner.
+TEST_F(DurableStoreTest, ASearchIsAnsweredFromTheFileAfterReopening) {
+    DesignProblem problem = load_design_problem(SPEC);
+    TaskKey scope = store_key(problem, heuristics::HeuristicKind::LMCUT);
+    DesignResult first;
+    {
+        EvaluationStore store(open(), scope);
+        LocalEvaluator local(problem, 1);
+        StoredEvaluator stored(problem, local, store);
+        first = search_design(problem, stored, {});
+        EXPECT_GT(first.counters.evaluator.planner_runs, 0);
+    }
+    auto db = open();
+    EXPECT_GT(db->report().records, 0u);
+    EvaluationStore store(db, scope);
+    EXPECT_EQ(store.size(), 0u); // nothing in memory yet: all of it comes from the file
+    DesignProblem reweighted = problem;
+    reweighted.tasks[0].probability = 0.9;
+    reweighted.tasks[1].probability = 0.1;
+    LocalEvaluator local(reweighted, 1);
+    StoredEvaluator stored(reweighted, local, store);
+    DesignResult second = search_design(reweighted, stored, {});
+    EXPECT_EQ(second.counters.evaluator.planner_runs, 0);
+    EXPECT_GT(stored.stored_answers(), 0);
+
+    // Another heuristic is another scope: its plans are its own.
+    EvaluationStore hmax(db, store_key(problem, heuristics::HeuristicKind::HMAX));
+    LocalEvaluator local_hmax(problem, 1);
+    StoredEvaluator stored_hmax(problem, local_hmax, hmax);
+    EXPECT_GT(search_design(problem, stored_hmax, {}).counters.evaluator.planner_runs, 0);
+}
+
+// What keep() returned from is in the file, before any search finished.
+TEST_F(DurableStoreTest, KeptEntriesAreInTheFileAtOnce) {
+    DesignProblem problem = load_design_problem(SPEC);
+    TaskKey scope = store_key(problem, heuristics::HeuristicKind::LMCUT);
+    TaskKey task = task_key(problem, 0);
+    EvaluationStore writer(open(), scope);
+    writer.keep({1}, task, solved());
+    writer.keep_robot_bound({1}, task, 4);
+    TaskExplicability limit;
+    writer.keep({2}, task, limit);         // LIMIT: nothing to keep
+    EvaluationStore reader(open(), scope); // a second handle, as after a restart
+    expect_equal(*reader.find({1}, task), solved());
+    EXPECT_EQ(reader.find_robot_bound({1}, task), 4);
+    EXPECT_FALSE(reader.find({2}, task));
+    EXPECT_FALSE(reader.find({1}, task_key(problem, 1)));
+}
+
+} // namespace
+} // namespace envdesign::design

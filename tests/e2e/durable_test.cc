@@ -1,0 +1,109 @@
+// Durable evaluations (issue 11) with real processes: a coordinator with --state-dir and two
+// planners; the coordinator SIGKILLed in the middle of a search and started again on the
+// same state directory; the client (the CLI, re-sending on silence) gets the undisturbed
+// design, and work answered before the kill is not done again.
+
+#include "local_cluster.h"
+
+namespace envdesign::e2e {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A paper Blocksworld problem (tests/data/paper): a few hundred jobs, seconds on 2 planners.
+const char *BLOCKS = "tests/data/paper/blocksworld/12/design-t10.textproto";
+
+class DurableTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("envdesign-durable-" + std::to_string(getpid()));
+        fs::remove_all(dir);
+        fs::create_directories(dir / "undisturbed");
+        fs::create_directories(dir / "killed");
+    }
+    void TearDown() override {
+        if (!HasFailure())
+            fs::remove_all(dir);
+    }
+    fs::path dir;
+};
+
+TEST_F(DurableTest, CoordinatorKilledMidSearchResumesFromItsStateDir) {
+    nlohmann::json want;
+    long long undisturbed = 0; // jobs the planners computed for the whole search
+    {
+        LocalCluster cluster(2, {"--state-dir", (dir / "undisturbed").string()});
+        HeartbeatTally tally(cluster.url());
+        want = CliRun(cluster.url(), source(BLOCKS), dir, "undisturbed").result();
+        tally.settle();
+        undisturbed = tally.done();
+        ASSERT_GT(undisturbed, 100);
+        EXPECT_EQ(want.at("cluster").at("jobs_sent"), undisturbed); // nothing computed twice
+    }
+
+    LocalCluster cluster(2, {"--state-dir", (dir / "killed").string()});
+    HeartbeatTally tally(cluster.url());
+    CliRun client(cluster.url(), source(BLOCKS), dir, "killed");
+    ASSERT_TRUE(tally.until([&] { return tally.done() >= undisturbed / 2; }));
+    long long beats = tally.beats(); // kill right after a heartbeat: its counts are current
+    ASSERT_TRUE(tally.until([&] { return tally.beats() > beats; }));
+    long long done_at_kill = tally.done();
+    long long in_flight = tally.held();
+    long long stored_at_kill = -1;
+    ASSERT_TRUE(client.running()) << "the search ended before the kill";
+    fs::path file = dir / "killed" / "evaluations.db";
+    cluster.restart_coordinator(SIGKILL, [&] { stored_at_kill = stored_records(file); });
+    nlohmann::json got = client.result();
+    tally.settle();
+    // Every job the restarted coordinator sent was for something not stored: each added a
+    // record (a job for a stored evaluation would add none).
+    auto counters = got.at("cluster");
+    long long new_jobs =
+        counters.at("jobs_sent").get<long long>() - counters.at("jobs_resent").get<long long>();
+    EXPECT_GT(stored_at_kill, done_at_kill / 2);
+    EXPECT_EQ(stored_records(file) - stored_at_kill, new_jobs);
+
+    expect_same_design(got, want);
+    long long sent_after = got.at("cluster").at("jobs_sent");
+    std::cout << "undisturbed " << undisturbed << " jobs; killed after " << done_at_kill << " with "
+              << in_flight << " in flight; the restarted coordinator sent " << sent_after
+              << "; the planners computed " << tally.done() << " in all; " << stored_at_kill
+              << " evaluations were stored at the kill\n";
+    // What was answered before the kill is not asked again; what was in flight may be. The
+    // witness search's job count itself varies by about 1% between undisturbed runs (two
+    // planners race, and answers steer the search), so the bounds allow 5% beside the jobs
+    // in flight; a coordinator that lost its evaluations would send about `undisturbed`
+    // jobs again after the kill, half of them too many.
+    long long slack = undisturbed / 20;
+    EXPECT_LE(done_at_kill + sent_after, undisturbed + in_flight + slack);
+    // The planners compute nothing twice: jobs the dead coordinator had in flight are
+    // answered from their memory when the restarted one sends them again.
+    EXPECT_LE(tally.done(), undisturbed + in_flight + slack);
+
+    // A clean restart: the repeat is answered from the file alone.
+    cluster.restart_coordinator(SIGTERM);
+    nlohmann::json repeat = CliRun(cluster.url(), source(BLOCKS), dir, "repeat").result();
+    expect_same_design(repeat, want);
+    EXPECT_EQ(repeat.at("cluster").at("jobs_sent"), 0);
+    EXPECT_NE(cluster.logs().find("stored evaluations in"), std::string::npos);
+}
+
+// A state file that is not ours is never read: the coordinator sets it aside, says so, and
+// serves from an empty one.
+TEST_F(DurableTest, AStateFileThatIsNotAStoreIsSetAsideAtStart) {
+    std::ofstream(dir / "killed" / "evaluations.db") << "SQLite format 3 but not really\n";
+    LocalCluster cluster(1, {"--state-dir", (dir / "killed").string()});
+    nlohmann::json got =
+        CliRun(cluster.url(), source("examples/restaurant/c-two-tasks-t10.textproto"), dir, "run")
+            .result();
+    EXPECT_EQ(got.at("status"), "optimal");
+    EXPECT_GT(got.at("cluster").at("jobs_sent"), 0);
+    EXPECT_NE(cluster.logs().find("could not be trusted"), std::string::npos) << cluster.logs();
+    int set_aside = 0;
+    for (const auto &entry : fs::directory_iterator(dir / "killed"))
+        set_aside += entry.path().filename().string().starts_with("evaluations.db.corrupt-");
+    EXPECT_EQ(set_aside, 1);
+}
+
+} // namespace
+} // namespace envdesign::e2e
