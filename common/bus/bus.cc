@@ -98,7 +98,9 @@ void Bus::trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channe
         bus.count_drop(channel, *verdict.drop);
         return;
     }
+    bus.message_sender_ = verdict.sender;
     bus.run_handler(slot->handler, buffer->data, static_cast<int>(verdict.payload_size), channel);
+    bus.message_sender_ = 0;
 }
 
 void Bus::run_handler(const RawHandler &handler, const void *data, int size,

@@ -131,6 +131,9 @@ public:
     AuthDrops auth_drops() const;
     // This bus's sender id in the trailer (0 without keys).
     std::uint64_t auth_sender() const { return signer_ ? signer_->sender() : 0; }
+    // In a handler (bus thread): the verified sender id of the message being handled, 0 on
+    // an unauthenticated bus. Binds a later message to the process that sent an earlier one.
+    std::uint64_t message_sender() const { return message_sender_; }
 
 private:
     friend class Subscription;
@@ -149,6 +152,7 @@ private:
     std::atomic<long long> handler_errors_{0};
     std::unique_ptr<Signer> signer_;     // under publish_mutex_
     std::unique_ptr<Verifier> verifier_; // bus thread
+    std::uint64_t message_sender_ = 0;   // bus thread
     mutable std::mutex drops_mutex_;
     AuthDrops drops_;
 };

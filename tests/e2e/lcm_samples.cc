@@ -103,8 +103,13 @@ int main(int argc, char **argv) {
         std::string flag = argv[i];
         (flag == "--count" ? count : period_ms) = std::atoi(argv[i + 1]);
     }
-    bus::Bus bus(argv[1], std::make_shared<spdlog::logger>(
-                              "samples", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    std::shared_ptr<const bus::KeyRing> keys; // signed like the services when they are
+    if (auto path = bus::key_file_path(""))
+        keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(*path));
+    bus::Bus bus(argv[1],
+                 std::make_shared<spdlog::logger>("samples",
+                                                  std::make_shared<spdlog::sinks::null_sink_mt>()),
+                 keys);
     for (int i = 0; i < count; ++i) {
         publish_all(bus);
         std::this_thread::sleep_for(std::chrono::milliseconds(period_ms));
