@@ -70,8 +70,9 @@ public:
     // `key_file`: every service signs and verifies with it (empty: no keys).
     explicit LocalCluster(int planners, std::vector<std::string> coordinator_flags = {},
                           std::string key_file = "")
-        : url_(unique_url()), dir_(std::filesystem::temp_directory_path() /
-                                   ("envdesign-e2e-" + std::to_string(getpid()))),
+        : url_(unique_url(alive_++)),
+          dir_(std::filesystem::temp_directory_path() /
+               ("envdesign-e2e-" + std::to_string(getpid()) + "-" + std::to_string(alive_))),
           key_file_(std::move(key_file)),
           watcher_(url_, key_file_.empty() ? nullptr
                                            : std::make_shared<const bus::KeyRing>(
