@@ -44,7 +44,7 @@ enum class Drop : int { UNAUTHENTICATED, UNKNOWN_KEY, BAD_MAC, STALE, REPLAYED }
 inline constexpr int DROP_REASONS = 5;
 const char *drop_name(Drop reason); // "unauthenticated", "unknown-key", ...
 
-// HMAC-SHA256 with one key, its OpenSSL state prepared once (a message costs a copy of it).
+// HMAC-SHA256 with one key, its OpenSSL state prepared once. Thread-safe (serialised).
 class Mac {
 public:
     explicit Mac(const std::string &secret);
