@@ -19,6 +19,7 @@
 
 #include <envdesign/client/client.h>
 
+#include <algorithm>
 #include <atomic>
 #include <fstream>
 #include <mutex>
@@ -299,6 +300,20 @@ void replay_test(const std::string &key_file) {
             << cluster.logs();
     EXPECT_TRUE(logged(cluster.planner(0), "dropped a message on ENVDESIGN_JOB: replayed"))
         << cluster.logs();
+    // Its heartbeats count them, for whoever watches the bus.
+    Rogue watcher(cluster.url(), key_file, true);
+    std::atomic<long long> counted{0};
+    watcher.on<envdesign::planner_heartbeat_t>(
+        bus::HEARTBEAT, [&](const envdesign::planner_heartbeat_t &b, const std::string &) {
+            if (b.sender == "planner-0")
+                counted = b.malformed;
+        });
+    watcher.start();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    watcher.stop();
+    long long jobs = std::count_if(capture.messages.begin(), capture.messages.end(),
+                                   [](const auto &m) { return m.first == bus::JOB; });
+    EXPECT_GE(counted, 2 * jobs) << "every replayed job, twice";
 }
 
 TEST(Attack, ReplaysWithoutAKeyAreRepeats) { replay_test(""); }
