@@ -9,6 +9,9 @@
 //   bus.publish(bus::JOB, job);                        // any thread
 //   while (running) bus.handle(std::chrono::milliseconds(20));   // one thread
 //
+//   auto keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(path));
+//   bus::Bus keyed(url, logger, keys);                 // signs and verifies everything
+//
 // Contract:
 //   - publish() is thread-safe; handle(), subscribe() and Subscription's destruction belong
 //     to one thread (the bus thread), or happen while no thread is in handle().
