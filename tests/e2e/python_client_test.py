@@ -121,7 +121,8 @@ class PythonClientWithKey(unittest.TestCase):
                                                  "a-one-task-t1.textproto"), self.url,
                                     give_up_after_s=1.5, resend_after_s=0.3)
         self.assertEqual(caught.exception.exit_code, 1)
-        log = open(os.path.join(self.work, "cluster", "coordinator.log")).read()
+        with open(os.path.join(self.work, "cluster", "coordinator.log")) as f:
+            log = f.read()
         self.assertIn("dropped a message on ENVDESIGN_REQUEST: unauthenticated", log)
 
     def test_key_file_others_can_read_is_refused(self):
