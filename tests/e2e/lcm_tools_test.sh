@@ -51,10 +51,14 @@ grep -q '"status":"optimal"' "$work/result.json"
 
 echo "== 2. lcm-spy decodes every channel"
 if command -v xvfb-run >/dev/null && [ -f /usr/share/java/jchart2d.jar ]; then
-    "$build/bin/lcm_samples" "$url" --count 40 --period-ms 100 &
+    # Samples until the spy has checked: Java and Xvfb may take seconds to start on a busy
+    # machine, and a spy that starts after the samples end hears only heartbeats.
+    "$build/bin/lcm_samples" "$url" --count 600 --period-ms 100 &
     samples=$!
+    pids+=("$samples")
     bash "$root/deploy/lcm-spy.sh" --lcm-url "$url" --check 3
-    wait "$samples"
+    kill "$samples" 2>/dev/null || true
+    wait "$samples" || true
 else
     echo "SKIPPED: no xvfb-run or jchart2d (deploy/install-deps.sh installs them)"
 fi
