@@ -1,7 +1,8 @@
 // lcm_samples URL [--count N] [--period-ms MS]: publishes one well-formed message of each
 // envdesign type on its channel, N times (default 1), for the LCM tool checks
 // (lcm_tools_test.sh): a normal run never sends some of them (a cancel, a spec need). The
-// samples name no real coordinator or planner, so services on the URL ignore them.
+// samples name no real coordinator or planner, so services on the URL ignore them. Signed
+// with $ENVDESIGN_KEY_FILE when it is set, as the services are.
 
 #include "bus/bus.h"
 #include "bus/channels.h"
