@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # deploy/cluster.sh start|stop|status [--planners N] [--workers W] [--lcm-url URL] [--dir DIR]
+#                                     [--key-file FILE]
 #
 # A local envdesign cluster on this machine: one envdesign-coordinator and N envdesign-planner
 # processes (default 2) on LCM's loopback default (udpm://239.255.76.67:7667?ttl=0; ttl=0
@@ -7,6 +8,7 @@
 # /tmp/envdesign-cluster). `start` returns once every process is up; `stop` sends SIGTERM
 # (planners first, so the coordinator hears them go), waits up to 10 s, then SIGKILLs.
 # Both are idempotent. Binaries: $ENVDESIGN_BIN, else build/bin beside this script.
+# --key-file (or $ENVDESIGN_KEY_FILE, which the services read themselves): bus keys.
 #
 #   bash deploy/cluster.sh start --planners 2
 #   build/bin/envdesign design examples/restaurant/c-two-tasks-t10.textproto \
@@ -22,12 +24,14 @@ planners=2
 workers=1
 url=${LCM_DEFAULT_URL:-udpm://239.255.76.67:7667?ttl=0}
 dir=/tmp/envdesign-cluster
+key_flags=()
 while [ $# -gt 0 ]; do
     case $1 in
         --planners) planners=$2; shift 2 ;;
         --workers) workers=$2; shift 2 ;;
         --lcm-url) url=$2; shift 2 ;;
         --dir) dir=$2; shift 2 ;;
+        --key-file) key_flags=(--key-file "$2"); shift 2 ;;
         *) echo "cluster.sh: unknown option $1" >&2; exit 2 ;;
     esac
 done
@@ -41,7 +45,7 @@ start_one() {
         echo "cluster.sh: $name already running (pid $(cat "$dir/$name.pid"))"
         return
     fi
-    "$@" --lcm-url "$url" --name "$name" >"$dir/$name.log" 2>&1 &
+    "$@" --lcm-url "$url" --name "$name" ${key_flags[@]+"${key_flags[@]}"} >"$dir/$name.log" 2>&1 &
     echo $! >"$dir/$name.pid"
 }
 
@@ -100,7 +104,7 @@ case $action in
         done
         ;;
     *)
-        echo "usage: cluster.sh start|stop|status [--planners N] [--workers W] [--lcm-url URL] [--dir DIR]" >&2
+        echo "usage: cluster.sh start|stop|status [--planners N] [--workers W] [--lcm-url URL] [--dir DIR] [--key-file FILE]" >&2
         exit 2
         ;;
 esac

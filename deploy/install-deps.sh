@@ -9,6 +9,7 @@ PACKAGES=(
     libprotobuf-dev protobuf-compiler
     libgtest-dev libgmock-dev
     liblcm-dev liblcm-bin liblcm-java libglib2.0-dev
+    libssl-dev  # HMAC-SHA256 of bus messages (common/bus/auth.h)
     openjdk-17-jdk xvfb xauth libjchart2d-java iproute2
     cyclonedds-dev cyclonedds-tools libcycloneddsidl0
     coinor-libcbc-dev  # the witness search's hitting-set phase (integer programs)

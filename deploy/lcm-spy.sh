@@ -7,6 +7,10 @@
 # types jar is build/lcmtypes/envdesign_lcmtypes.jar, or $ENVDESIGN_LCM_JAR, or the installed
 # one (share/java/envdesign_lcmtypes.jar).
 #
+# On an authenticated bus (deploy/LAN.md "Authentication") lcm-spy needs no key: messages are
+# the LCM encoding followed by a trailer, and LCM's Java decoders ignore bytes after a message.
+# It cannot verify them either: what it shows may be forged.
+#
 # --check SECONDS: no window for you. Runs lcm-spy under Xvfb for SECONDS on URL and checks
 # from its channel table that every ENVDESIGN_ channel heard was decoded, and that all of
 # $ENVDESIGN_SPY_CHANNELS (default: all nine) were heard. Exit 0 when so.

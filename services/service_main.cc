@@ -20,6 +20,9 @@ void add_common_flags(CLI::App &app, CommonFlags &flags) {
     app.add_option("--lcm-url", flags.lcm_url,
                    "LCM URL (default: $LCM_DEFAULT_URL, else udpm://239.255.76.67:7667?ttl=0)");
     app.add_option("--name", flags.name, "instance name on the bus (default: ROLE/HOST/PID)");
+    app.add_option("--key-file", flags.key_file,
+                   "bus keys, 'KEY_ID HEX_SECRET' a line, mode 0600 (default: "
+                   "$ENVDESIGN_KEY_FILE; none: the bus is unauthenticated)");
     app.add_option("--log-level", flags.log_level, "trace|debug|info|warn|error|off")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
 }
@@ -30,8 +33,17 @@ Service open_service(const std::string &role, const CommonFlags &flags) {
     s.log = bus::make_logger(s.instance, spdlog::level::from_str(flags.log_level));
     std::string url =
         bus::with_receive_buffer(flags.lcm_url.empty() ? bus::default_url() : flags.lcm_url);
-    s.bus = std::make_unique<bus::Bus>(url, s.log);
+    std::shared_ptr<const bus::KeyRing> keys;
+    if (auto path = bus::key_file_path(flags.key_file))
+        keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(*path));
+    s.bus = std::make_unique<bus::Bus>(url, s.log, keys);
     s.log->info("request - | on {}", url);
+    if (keys)
+        s.log->info("request - | bus authenticated: signing with key '{}', {} key(s) accepted",
+                    keys->keys.front().id, keys->keys.size());
+    else
+        s.log->warn("request - | the bus is unauthenticated (no --key-file or "
+                    "ENVDESIGN_KEY_FILE): anyone on the network can change results");
     return s;
 }
 
@@ -58,6 +70,9 @@ int serve(const std::string &role, const CommonFlags &flags,
     try {
         Service service = open_service(role, flags);
         return run(service);
+    } catch (const bus::KeyFileError &e) {
+        std::cerr << "envdesign-" << role << ": --key-file: " << e.what() << std::endl;
+        return 2;
     } catch (const std::exception &e) {
         std::cerr << "envdesign-" << role << ": " << e.what() << std::endl;
         return 1;

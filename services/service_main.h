@@ -17,11 +17,13 @@ struct CommonFlags {
     std::string lcm_url; // empty: LCM's default
     std::string name;    // empty: ROLE/HOST/PID
     std::string log_level = "info";
+    std::string key_file; // empty: $ENVDESIGN_KEY_FILE, else an unauthenticated bus
 };
 
 void add_common_flags(CLI::App &app, CommonFlags &flags);
 
-// The instance name, its logger and its bus; throws bus::BusError if LCM cannot start.
+// The instance name, its logger and its bus; throws bus::BusError if LCM cannot start and
+// bus::KeyFileError if the key file is unusable.
 struct Service {
     std::string instance;
     std::shared_ptr<spdlog::logger> log;
@@ -35,7 +37,8 @@ std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
                                       const std::function<void()> &check = {});
 
 // Opens the service as `role` and returns what `run` returns; an exception out of either is
-// reported as "envdesign-ROLE: ..." with exit code 1, a URL that is not LCM's with 2.
+// reported as "envdesign-ROLE: ..." with exit code 1, a URL that is not LCM's or a key file
+// that is unusable (unreadable, malformed, readable by others) with 2.
 int serve(const std::string &role, const CommonFlags &flags,
           const std::function<int(Service &)> &run);
 

@@ -81,6 +81,7 @@ int run_design_remote(const DesignFlags &flags) {
     options.prune = flags.prune;
     options.search = flags.search;
     options.heuristic = flags.heuristic;
+    options.key_file = flags.key_file;
     options.on_progress = client::stderr_progress();
     options.stop_requested = [] { return interrupted != 0; };
     client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
@@ -117,6 +118,8 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
     command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
         ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
     command.add_option("--connect", flags.connect, "LCM URL of a running coordinator");
+    command.add_option("--key-file", flags.key_file,
+                       "with --connect: bus keys (default: $ENVDESIGN_KEY_FILE; deploy/LAN.md)");
 }
 
 int run_design(const DesignFlags &flags) {

@@ -16,7 +16,8 @@ struct DesignFlags {
     std::string search = "witness";
     std::string prune = "none";
     std::string heuristic = "lmcut";
-    std::string connect; // LCM URL of a running coordinator; --workers does not apply then
+    std::string connect;  // LCM URL of a running coordinator; --workers does not apply then
+    std::string key_file; // with connect: bus keys (empty: $ENVDESIGN_KEY_FILE)
 };
 
 void add_design_flags(CLI::App &command, DesignFlags &flags);

@@ -3,6 +3,7 @@
 
     python3 clients/python/envdesign_client.py SPEC [--connect URL] [--json] [--timeout S]
         [--time-limit S] [--max-design-size K] [--prune none|relevant] [--heuristic H]
+        [--key-file FILE]
 
     import envdesign_client
     result = envdesign_client.design("spec.textproto", "udpm://239.255.76.67:7667?ttl=0")
@@ -12,7 +13,9 @@ Debian ships no LCM Python module, so this speaks LCM's UDP multicast protocol i
 and fragmented messages, stdlib sockets) and uses the classes lcm-gen writes for our types
 (pure Python: build/python/envdesign, or $ENVDESIGN_PYTHON_TYPES). Like the C++ client it
 inlines the PDDL files the spec names, re-sends the request while the coordinator is silent,
-cancels it when its own timeout passes, and exits with SPEC.md's codes.
+cancels it when its own timeout passes, and exits with SPEC.md's codes. With a key file
+(--key-file or $ENVDESIGN_KEY_FILE) it signs what it sends and takes only what the key signed
+(envdesign_auth.py); results and progress count only from the coordinator that took the request.
 """
 import argparse
 import json
@@ -25,6 +28,8 @@ import struct
 import sys
 import time
 import urllib.parse
+
+import envdesign_auth
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 for candidate in (os.environ.get("ENVDESIGN_PYTHON_TYPES", ""), HERE,  # HERE: installed
@@ -49,7 +54,8 @@ class SpecError(Exception):
 class UdpmBus:
     """LCM over UDP multicast (LCM's udpm:// provider), as far as a client needs it."""
 
-    def __init__(self, url):
+    def __init__(self, url, auth=None):
+        self.auth = auth  # envdesign_auth.Auth, or None: unauthenticated
         parsed = urllib.parse.urlparse(url)
         if parsed.scheme != "udpm":
             raise ValueError("only udpm:// URLs are supported, not " + url)
@@ -73,6 +79,8 @@ class UdpmBus:
         self.rx.close()
 
     def publish(self, channel, payload):
+        if self.auth:
+            payload = self.auth.sign(channel, payload)
         self.sequence = (self.sequence + 1) & 0xFFFFFFFF
         name = channel.encode() + b"\0"
         if 8 + len(name) + len(payload) <= SHORT_MAX:
@@ -102,6 +110,9 @@ class UdpmBus:
             except socket.timeout:
                 return None
             message = self._take(datagram, sender)
+            if message and self.auth:
+                payload = self.auth.verify(*message)
+                message = (message[0], payload) if payload is not None else None
             if message:
                 return message
 
@@ -245,9 +256,13 @@ class RemoteError(Exception):
 
 
 def design(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none",
-           heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3, give_up_after_s=30):
+           heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3, give_up_after_s=30,
+           key_file=None):
     """SPEC.md's result (a dict) of designing `spec_path` on the coordinator at `url`.
-    Raises SpecError (exit 2) or RemoteError (its exit_code: 1, 2 or 4)."""
+    Raises SpecError or envdesign_auth.KeyFileError (exit 2) or RemoteError (its exit_code:
+    1, 2 or 4)."""
+    path = envdesign_auth.key_file_path(key_file)
+    auth = envdesign_auth.Auth(envdesign_auth.load_key_file(path)) if path else None
     request = design_request_t()
     request.spec = bundle_spec(spec_path)
     request.utime = int(time.time() * 1e6)
@@ -256,7 +271,7 @@ def design(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none
     request.time_limit_s, request.max_design_size = float(time_limit_s), int(max_design_size)
     request.prune = {"none": 0, "relevant": 1}[prune]
     request.heuristic = {"lmcut": 0, "hmax": 1, "blind": 2}[heuristic]
-    bus = UdpmBus(url or os.environ.get("LCM_DEFAULT_URL") or DEFAULT_URL)
+    bus = UdpmBus(url or os.environ.get("LCM_DEFAULT_URL") or DEFAULT_URL, auth)
     try:
         return _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_up_after_s)
     finally:
@@ -267,11 +282,12 @@ def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_
     start = sent = heard = time.monotonic()
     bus.publish("ENVDESIGN_REQUEST", request.encode())
     cancelled = False
+    taken_by = [None]  # the coordinator that took the request
     while True:
         message = bus.receive(0.05)
         now = time.monotonic()
         if message:
-            result = _ours(message, request, on_progress)
+            result = _ours(message, request, on_progress, taken_by)
             if result is not None:
                 if result.status == "error":
                     raise RemoteError(result.exit_code, result.error)
@@ -291,21 +307,30 @@ def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_
         if now - heard > give_up_after_s:
             raise RemoteError(1, f"no coordinator answered on udpm://{bus.group}:{bus.port}")
         if now - sent > resend_after_s and now - heard > resend_after_s:
+            taken_by[0] = None  # it went silent: whoever takes the request now
             bus.publish("ENVDESIGN_REQUEST", request.encode())
             sent = now
 
 
-def _ours(message, request, on_progress):
+def _from_taker(m, request, taken_by):
+    """`m` answers our request, from the coordinator that took it (the first to answer)."""
+    if m.request_id != request.request_id or m.client != request.sender:
+        return False
+    taken_by[0] = taken_by[0] or m.sender
+    return m.sender == taken_by[0]
+
+
+def _ours(message, request, on_progress, taken_by):
     """The result if `message` is ours; calls on_progress for our progress."""
     channel, payload = message
     try:
         if channel == "ENVDESIGN_RESULT":
             r = design_result_t.decode(payload)
-            if r.request_id == request.request_id and r.client == request.sender:
+            if _from_taker(r, request, taken_by):
                 return r
         elif channel == "ENVDESIGN_PROGRESS":
             p = design_progress_t.decode(payload)
-            if p.request_id == request.request_id and p.client == request.sender and on_progress:
+            if _from_taker(p, request, taken_by) and on_progress:
                 on_progress(p)
     except (ValueError, struct.error):
         pass  # not our types: somebody else's traffic, or garbage
@@ -322,6 +347,8 @@ def main():
     parser.add_argument("--max-design-size", type=int, default=-1)
     parser.add_argument("--prune", choices=["none", "relevant"], default="none")
     parser.add_argument("--heuristic", choices=["lmcut", "hmax", "blind"], default="lmcut")
+    parser.add_argument("--key-file", default=None,
+                        help="bus keys (default: $ENVDESIGN_KEY_FILE; deploy/LAN.md)")
     args = parser.parse_args()
 
     def progress(p):
@@ -331,8 +358,9 @@ def main():
 
     try:
         result, code = design(args.spec, args.connect, args.time_limit, args.max_design_size,
-                              args.prune, args.heuristic, args.timeout, progress)
-    except SpecError as e:
+                              args.prune, args.heuristic, args.timeout, progress,
+                              key_file=args.key_file)
+    except (SpecError, envdesign_auth.KeyFileError) as e:
         print(e, file=sys.stderr)
         return 2
     except RemoteError as e:

@@ -1,5 +1,7 @@
 #include "bus/bus.h"
 
+#include "bus/log.h"
+
 #include <bit>
 #include <utility>
 
@@ -8,6 +10,8 @@ namespace envdesign::bus {
 struct Subscription::Slot {
     Bus *bus;
     RawHandler handler;
+    // Per subscription: LCM hands one message to every subscription of its channel.
+    ReplayGuard replay;
 };
 
 Subscription::Subscription(Bus *bus, lcm::Subscription *raw, std::unique_ptr<Slot> slot)
@@ -37,24 +41,36 @@ void Subscription::reset() {
     slot_.reset();
 }
 
-Bus::Bus(const std::string &url, std::shared_ptr<spdlog::logger> logger)
+Bus::Bus(const std::string &url, std::shared_ptr<spdlog::logger> logger,
+         std::shared_ptr<const KeyRing> keys)
     : url_(url), logger_(logger ? std::move(logger) : spdlog::default_logger()), lcm_(url) {
     if (!lcm_.good())
         throw BusError("LCM cannot start on '" + url +
                        "' (udpm needs a multicast route: ip route add 224.0.0.0/4 dev lo)");
+    if (keys) {
+        signer_ = std::make_unique<Signer>(*keys);
+        verifier_ = std::make_unique<Verifier>(*keys);
+    }
 }
 
 Bus::~Bus() = default;
 
 void Bus::publish_raw(const std::string &channel, const void *data, int size) {
     std::lock_guard lock(publish_mutex_);
+    std::string signed_bytes; // signed under the lock: counters go out in order
+    if (signer_) {
+        signed_bytes = signer_->sign(channel, data, static_cast<std::size_t>(size));
+        data = signed_bytes.data();
+        size = static_cast<int>(signed_bytes.size());
+    }
     if (lcm_.publish(channel, data, static_cast<unsigned int>(size)) != 0)
         logger_->warn("request - | could not publish {} bytes on {}", size, channel);
 }
 
 Subscription Bus::subscribe_raw(const std::string &channel, RawHandler handler,
                                 int queue_capacity) {
-    auto slot = std::make_unique<Subscription::Slot>(Subscription::Slot{this, std::move(handler)});
+    auto slot = std::make_unique<Subscription::Slot>(
+        Subscription::Slot{this, std::move(handler), ReplayGuard()});
     lcm::Subscription *raw =
         lcm_.subscribeFunction(channel, &Bus::trampoline, static_cast<void *>(slot.get()));
     if (!raw)
@@ -65,14 +81,33 @@ Subscription Bus::subscribe_raw(const std::string &channel, RawHandler handler,
 
 void Bus::trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channel, void *context) {
     auto *slot = static_cast<Subscription::Slot *>(context);
-    slot->bus->run_handler(slot->handler, buffer, channel);
+    Bus &bus = *slot->bus;
+    if (!bus.verifier_) {
+        bus.run_handler(slot->handler, buffer->data, static_cast<int>(buffer->data_size), channel);
+        return;
+    }
+    Verdict verdict;
+    try {
+        verdict = bus.verifier_->verify(channel, buffer->data, buffer->data_size, slot->replay,
+                                        now_utime());
+    } catch (const std::exception &e) { // OpenSSL failed; nothing may escape into LCM
+        bus.logger_->error("request - | cannot verify a message on {}: {}", channel, e.what());
+        return;
+    }
+    if (!verdict.ok()) {
+        bus.count_drop(channel, *verdict.drop);
+        return;
+    }
+    bus.message_sender_ = verdict.sender;
+    bus.run_handler(slot->handler, buffer->data, static_cast<int>(verdict.payload_size), channel);
+    bus.message_sender_ = 0;
 }
 
-void Bus::run_handler(const RawHandler &handler, const lcm::ReceiveBuffer *buffer,
+void Bus::run_handler(const RawHandler &handler, const void *data, int size,
                       const std::string &channel) {
     // Called from LCM's C code: nothing may escape.
     try {
-        handler(buffer->data, static_cast<int>(buffer->data_size));
+        handler(data, size);
     } catch (const std::exception &e) {
         long long n = ++handler_errors_;
         logger_->error("request - | handler for {} failed ({} so far): {}", channel, n, e.what());
@@ -86,6 +121,41 @@ void Bus::unsubscribe(lcm::Subscription *raw) { lcm_.unsubscribe(raw); }
 
 int Bus::handle(std::chrono::milliseconds timeout) {
     return lcm_.handleTimeout(static_cast<int>(std::max<long long>(0, timeout.count())));
+}
+
+void Bus::count_drop(const std::string &channel, Drop reason) {
+    long long n = 0, all = 0;
+    {
+        std::lock_guard lock(drops_mutex_);
+        auto &counts = drops_.by_channel[channel];
+        n = ++counts[static_cast<int>(reason)];
+        all = drops_.total();
+    }
+    // As reject(): the first ten, then every power of two of the total, so a flood of forged
+    // messages cannot flood the log.
+    auto level = all <= 10 || std::has_single_bit(static_cast<unsigned long long>(all))
+                     ? spdlog::level::warn
+                     : spdlog::level::debug;
+    logger_->log(level, "request - | dropped a message on {}: {} ({} such, {} dropped in all)",
+                 channel, drop_name(reason), n, all);
+}
+
+AuthDrops Bus::auth_drops() const {
+    std::lock_guard lock(drops_mutex_);
+    return drops_;
+}
+
+long long AuthDrops::count(const std::string &channel, Drop reason) const {
+    auto it = by_channel.find(channel);
+    return it == by_channel.end() ? 0 : it->second[static_cast<int>(reason)];
+}
+
+long long AuthDrops::total() const {
+    long long sum = 0;
+    for (const auto &[channel, counts] : by_channel)
+        for (long long n : counts)
+            sum += n;
+    return sum;
 }
 
 void Bus::reject(const std::string &channel, const std::string &why) {

@@ -9,6 +9,9 @@
 //   bus.publish(bus::JOB, job);                        // any thread
 //   while (running) bus.handle(std::chrono::milliseconds(20));   // one thread
 //
+//   auto keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(path));
+//   bus::Bus keyed(url, logger, keys);                 // signs and verifies everything
+//
 // Contract:
 //   - publish() is thread-safe; handle(), subscribe() and Subscription's destruction belong
 //     to one thread (the bus thread), or happen while no thread is in handle().
@@ -20,7 +23,13 @@
 //     default of 30 drops bursts of jobs and answers).
 //   - In-process: "memq://" delivers only within this Bus; cores that talk in one process
 //     must share it.
+//   - With a KeyRing (key_file.h) every message published is signed and every message
+//     received is verified before it is decoded (auth.h): one that is unauthenticated,
+//     forged, stale or replayed never reaches a handler; it is counted per channel and
+//     reason (auth_drops()) and logged at a rate limit. Without one, nothing is signed and
+//     nothing is checked (signed messages do not decode then: all or none have the key).
 
+#include "bus/auth.h"
 #include "bus/codec.h"
 
 #include <lcm/lcm-cpp.hpp>
@@ -29,6 +38,7 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -66,12 +76,21 @@ private:
 
 using RawHandler = std::function<void(const void *data, int size)>;
 
+// Messages dropped by authentication: per channel, per reason (auth.h's Drop).
+struct AuthDrops {
+    std::map<std::string, std::array<long long, DROP_REASONS>> by_channel;
+    long long count(const std::string &channel, Drop reason) const;
+    long long total() const;
+};
+
 class Bus {
 public:
     static constexpr int DEFAULT_QUEUE = 10000;
 
     // Throws BusError when LCM cannot start on `url` (e.g. udpm without a multicast route).
-    Bus(const std::string &url, std::shared_ptr<spdlog::logger> logger);
+    // `keys`: sign and verify with them (nullptr: an unauthenticated bus).
+    Bus(const std::string &url, std::shared_ptr<spdlog::logger> logger,
+        std::shared_ptr<const KeyRing> keys = nullptr);
     ~Bus();
     Bus(const Bus &) = delete;
     Bus &operator=(const Bus &) = delete;
@@ -111,14 +130,22 @@ public:
     void reject(const std::string &channel, const std::string &why);
     long long malformed() const { return malformed_.load(); }
     long long handler_errors() const { return handler_errors_.load(); }
+    bool authenticated() const { return verifier_ != nullptr; }
+    AuthDrops auth_drops() const;
+    // This bus's sender id in the trailer (0 without keys).
+    std::uint64_t auth_sender() const { return signer_ ? signer_->sender() : 0; }
+    // In a handler (bus thread): the verified sender id of the message being handled, 0 on
+    // an unauthenticated bus. Binds a later message to the process that sent an earlier one.
+    std::uint64_t message_sender() const { return message_sender_; }
 
 private:
     friend class Subscription;
     static void trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channel,
                            void *context);
-    void run_handler(const RawHandler &handler, const lcm::ReceiveBuffer *buffer,
+    void run_handler(const RawHandler &handler, const void *data, int size,
                      const std::string &channel);
     void unsubscribe(lcm::Subscription *raw);
+    void count_drop(const std::string &channel, Drop reason);
 
     std::string url_;
     std::shared_ptr<spdlog::logger> logger_;
@@ -126,6 +153,11 @@ private:
     std::mutex publish_mutex_;
     std::atomic<long long> malformed_{0};
     std::atomic<long long> handler_errors_{0};
+    std::unique_ptr<Signer> signer_;     // under publish_mutex_
+    std::unique_ptr<Verifier> verifier_; // bus thread
+    std::uint64_t message_sender_ = 0;   // bus thread
+    mutable std::mutex drops_mutex_;
+    AuthDrops drops_;
 };
 
 } // namespace envdesign::bus

@@ -116,6 +116,7 @@ void Coordinator::on_request(const design_request_t &request) {
                        config_.grace_s,
                        config_.stored_evaluations > 0 ? &stores_ : nullptr};
     open_[name].run = std::make_unique<RequestRun>(context, request);
+    open_[name].client_origin = bus_.message_sender();
     waiting_.push_back(name);
     {
         std::lock_guard lock(stats_mutex_);
@@ -129,6 +130,12 @@ void Coordinator::on_cancel(const envdesign::cancel_t &cancel) {
     auto it = open_.find(name);
     if (it == open_.end())
         return; // finished already, or never here
+    if (it->second.client_origin != bus_.message_sender()) {
+        // Only the process that sent the request may cancel it (with keys, the name alone
+        // could be claimed by any key holder's process).
+        bus_.reject(bus::CANCEL, "request " + name + ": a cancel from another process");
+        return;
+    }
     bus_.log().info("request {} | cancelled by the client: {}", name, cancel.reason);
     it->second.run->cancel();
 }

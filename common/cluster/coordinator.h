@@ -74,6 +74,7 @@ private:
         bool started = false;
         Clock::time_point last_progress{};
         envdesign::design_progress_t last_sent{};
+        std::uint64_t client_origin = 0; // the bus sender of the request (0: no keys)
     };
     struct Closed {
         envdesign::design_result_t result;

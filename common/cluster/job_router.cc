@@ -76,6 +76,11 @@ std::int64_t JobRouter::send(std::uint64_t owner, envdesign::job_t job) {
 void JobRouter::on_evaluation(const envdesign::evaluation_t &answer) {
     if (answer.coordinator != instance_)
         return; // another coordinator's
+    if (!pool_.sent_to(answer.job_id, answer.sender)) {
+        bus_.reject(bus::EVALUATION, "job " + std::to_string(answer.job_id) + " answered by " +
+                                         answer.sender + ", which it was not sent to");
+        return;
+    }
     auto kind = pool_.kind_of(answer.job_id);
     if (kind) {
         if (auto problem = evaluation_problem(answer, *kind)) {

@@ -244,7 +244,7 @@ void Planner::heartbeat(bool stopping) {
     }
     beat.num_jobs = static_cast<std::int16_t>(beat.jobs.size());
     beat.specs_cached = specs_.size();
-    beat.malformed = bus_.malformed();
+    beat.malformed = bus_.malformed() + bus_.auth_drops().total(); // lcm-spy shows attacks
     beat.stopping = stopping;
     bus_.publish(bus::HEARTBEAT, beat);
     last_beat_ = Clock::now();

@@ -32,6 +32,7 @@ std::vector<envdesign::job_t> PlannerPool::heartbeat(const envdesign::planner_he
     it->second.slots = std::max(1, static_cast<int>(beat.capacity)) * config_.jobs_per_slot;
     it->second.last_beat = now;
     std::set<std::int64_t> held(beat.jobs.begin(), beat.jobs.end());
+    std::erase_if(it->second.overdue, [&](const auto &job) { return !held.count(job.first); });
     auto lost_before = now - std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(config_.lost_after_s));
     std::vector<std::int64_t> lost;
@@ -48,6 +49,7 @@ std::optional<JobRecord> PlannerPool::answer(std::int64_t job_id, const std::str
                                              Clock::time_point now) {
     std::lock_guard lock(mutex_);
     auto it = jobs_.find(job_id);
+    note_answer_time(from, job_id, it == jobs_.end() ? nullptr : &it->second, now);
     if (it == jobs_.end()) {
         ++counters_.duplicates; // answered already, or never ours
         if (auto a = answered_.find(job_id); a != answered_.end())
@@ -77,7 +79,78 @@ std::vector<envdesign::job_t> PlannerPool::expire(Clock::time_point now, Events 
             gone.push_back(name);
     for (const auto &name : gone)
         drop_planner(name, events, "went silent");
+    take_overdue(now, events);
     return assign(now);
+}
+
+// Jobs past their deadline go back to the queue (a planner that lists a job and never answers
+// would hold it for good); their holders' slots stay taken until they let go of them.
+void PlannerPool::take_overdue(Clock::time_point now, Events *events) {
+    std::vector<std::int64_t> overdue;
+    for (const auto &[id, record] : jobs_)
+        if (!record.planner.empty() && now - record.sent > deadline())
+            overdue.push_back(id);
+    for (std::int64_t id : overdue) {
+        JobRecord &record = jobs_.at(id);
+        Planner &holder = planners_.at(record.planner);
+        holder.overdue[id] = record.sent;
+        ++counters_.deadlines_missed;
+        if (++holder.misses >= config_.demote_after && !holder.demoted) {
+            holder.demoted = true;
+            ++counters_.planners_demoted;
+            if (events)
+                events->push_back("planner " + record.planner + " missed " +
+                                  std::to_string(holder.misses) +
+                                  " job deadlines in a row: demoted");
+        }
+        if (events)
+            events->push_back("job " + std::to_string(id) + " missed its deadline at " +
+                              record.planner + "; sent again");
+        requeue(id);
+    }
+}
+
+// How long planners take: the deadline grows with the slowest answer, so that honest
+// planners on hard problems are not taken for stuck ones; an answer in time clears misses.
+void PlannerPool::note_answer_time(const std::string &from, std::int64_t job_id,
+                                   const JobRecord *record, Clock::time_point now) {
+    auto planner = planners_.find(from);
+    if (planner == planners_.end())
+        return;
+    std::optional<Clock::time_point> sent;
+    if (auto late = planner->second.overdue.find(job_id); late != planner->second.overdue.end()) {
+        sent = late->second;
+        planner->second.overdue.erase(late);
+    } else if (record && record->planner == from) {
+        sent = record->sent;
+        planner->second.misses = 0;
+        planner->second.demoted = false;
+    }
+    if (sent)
+        longest_answer_s_ =
+            std::max(longest_answer_s_, std::chrono::duration<double>(now - *sent).count());
+}
+
+PlannerPool::Clock::duration PlannerPool::deadline() const {
+    double seconds = std::max(config_.job_deadline_s, config_.deadline_factor * longest_answer_s_);
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
+
+double PlannerPool::deadline_s() const {
+    std::lock_guard lock(mutex_);
+    return std::chrono::duration<double>(deadline()).count();
+}
+
+bool PlannerPool::sent_to(std::int64_t job_id, const std::string &planner) const {
+    std::lock_guard lock(mutex_);
+    auto it = jobs_.find(job_id);
+    return it == jobs_.end() || it->second.tried.count(planner) > 0;
+}
+
+bool PlannerPool::demoted(const std::string &planner) const {
+    std::lock_guard lock(mutex_);
+    auto it = planners_.find(planner);
+    return it != planners_.end() && it->second.demoted;
 }
 
 void PlannerPool::forget(const std::vector<std::int64_t> &job_ids) {
@@ -178,26 +251,31 @@ std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
     return out;
 }
 
-// Round robin over planners with a free slot, preferring one that has not had this job.
+// Round robin over planners with a free slot, preferring one that has not had this job;
+// demoted planners only when no other has a free slot.
 std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record) {
-    std::optional<std::string> fallback;
-    auto start = planners_.upper_bound(last_pick_);
-    for (std::size_t i = 0; i < planners_.size(); ++i, ++start) {
-        if (start == planners_.end())
-            start = planners_.begin();
-        const auto &[name, planner] = *start;
-        if (planner.holding >= planner.slots)
-            continue;
-        if (!record.tried.count(name)) {
-            last_pick_ = name;
-            return name;
+    for (bool demoted : {false, true}) {
+        std::optional<std::string> fallback;
+        auto start = planners_.upper_bound(last_pick_);
+        for (std::size_t i = 0; i < planners_.size(); ++i, ++start) {
+            if (start == planners_.end())
+                start = planners_.begin();
+            const auto &[name, planner] = *start;
+            if (!planner.free() || planner.demoted != demoted)
+                continue;
+            if (!record.tried.count(name)) {
+                last_pick_ = name;
+                return name;
+            }
+            if (!fallback)
+                fallback = name;
         }
-        if (!fallback)
-            fallback = name;
+        if (fallback) {
+            last_pick_ = *fallback;
+            return fallback;
+        }
     }
-    if (fallback)
-        last_pick_ = *fallback;
-    return fallback;
+    return std::nullopt;
 }
 
 void PlannerPool::requeue(std::int64_t job_id) {

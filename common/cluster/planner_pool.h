@@ -10,6 +10,13 @@
 //     gone: its jobs are queued again (attempt + 1), preferably for another planner;
 //   - a job the planner's heartbeat does not list although it was sent lost_after_s before
 //     that heartbeat arrived was lost (or its answer was): it is sent again (same job_id);
+//   - a job still held after its deadline (max(job_deadline_s, deadline_factor x the longest
+//     answer time seen)) is taken from its holder and sent again, preferably to another
+//     planner; the holder's slot stays taken until it answers or stops listing the job (so
+//     a planner that lists jobs and never answers soon gets none), and after demote_after
+//     missed deadlines in a row it is demoted: it gets jobs only when no other planner has
+//     a free slot, until it answers one in time;
+//   - an answer counts only from a planner the job was sent to (sent_to());
 //   - the first answer to a job wins; later ones are duplicates.
 // Thread-safe.
 
@@ -35,6 +42,9 @@ struct PoolConfig {
     // answer to the last one travels (the round trip is hidden), at the price of `abandon`
     // seeing answers a job later.
     int jobs_per_slot = 2;
+    double job_deadline_s = 5.0; // the least deadline of a job
+    double deadline_factor = 4;  // x the longest time a planner took to answer
+    int demote_after = 2;        // missed deadlines in a row
 };
 
 struct PoolCounters {
@@ -43,6 +53,8 @@ struct PoolCounters {
     long long duplicates = 0;  // answers to jobs answered before (or never sent)
     long long planners_joined = 0;
     long long planners_lost = 0;
+    long long deadlines_missed = 0; // jobs taken from their holder at their deadline
+    long long planners_demoted = 0;
     std::set<std::string> answered_by; // planners that answered
 };
 
@@ -78,10 +90,15 @@ public:
     // Forgets everything about `owner`'s jobs.
     void forget_owner(std::uint64_t owner);
 
+    // False if `job_id` is outstanding and was never sent to `planner` (an answer from it is
+    // not to be taken); true otherwise (an unknown job's answer is a duplicate anyway).
+    bool sent_to(std::int64_t job_id, const std::string &planner) const;
     // The kind of an outstanding job, to check its answer against.
     std::optional<std::int8_t> kind_of(std::int64_t job_id) const;
     int capacity() const; // job slots of the live planners
     int live_planners() const;
+    bool demoted(const std::string &planner) const;
+    double deadline_s() const; // what a job sent now has
     int jobs_in_flight(std::uint64_t owner) const;
     PoolCounters counters() const;
     // The counters of `owner`'s jobs alone (planners joined and lost stay 0).
@@ -92,6 +109,10 @@ private:
         int slots = 1;
         int holding = 0;
         Clock::time_point last_beat;
+        std::map<std::int64_t, Clock::time_point> overdue; // taken at their deadline: when sent
+        int misses = 0;                                    // deadlines in a row
+        bool demoted = false;
+        bool free() const { return holding + static_cast<int>(overdue.size()) < slots; }
     };
 
     std::vector<envdesign::job_t> assign(Clock::time_point now);
@@ -100,6 +121,10 @@ private:
     void release(JobRecord &record);
     void drop_planner(const std::string &name, Events *events, const char *why);
     void remember_answered(std::int64_t job_id, std::uint64_t owner);
+    void take_overdue(Clock::time_point now, Events *events);
+    void note_answer_time(const std::string &from, std::int64_t job_id, const JobRecord *record,
+                          Clock::time_point now);
+    Clock::duration deadline() const;
 
     PoolConfig config_;
     mutable std::mutex mutex_;
@@ -112,6 +137,7 @@ private:
     // Recently answered jobs and their owners, so that duplicates count for their request.
     std::map<std::int64_t, std::uint64_t> answered_;
     std::deque<std::int64_t> answered_order_;
+    double longest_answer_s_ = 0;
 };
 
 } // namespace envdesign::cluster

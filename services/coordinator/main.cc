@@ -22,6 +22,11 @@ int main(int argc, char **argv) {
                    "seconds after which a job its planner does not list is sent again")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    app.add_option("--job-deadline", config.pool.job_deadline_s,
+                   "least seconds a planner may hold a job before it goes to another (grows to "
+                   "4x the slowest answer); planners that miss deadlines are demoted")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     app.add_option("--jobs-per-slot", config.pool.jobs_per_slot,
                    "jobs in flight per planner worker")
         ->check(CLI::Range(1, 64))

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace envdesign::cluster {
 namespace {
 
@@ -135,6 +137,89 @@ TEST(PlannerPool, ForgottenJobsFreeTheirSlots) {
     pool.forget_owner(3);
     EXPECT_EQ(pool.jobs_in_flight(3), 0);
     EXPECT_EQ(pool.submit(4, job(9), now).size(), 1u);
+}
+
+TEST(PlannerPool, AnAnswerCountsOnlyFromAPlannerTheJobWasSentTo) {
+    PlannerPool pool({1.0, 0.3, 1});
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.heartbeat(beat("b", 1), now);
+    auto sent = pool.submit(1, job(1), now);
+    std::string other = sent[0].planner == "a" ? "b" : "a";
+    EXPECT_TRUE(pool.sent_to(1, sent[0].planner));
+    EXPECT_FALSE(pool.sent_to(1, other));
+    EXPECT_FALSE(pool.sent_to(1, "rogue"));
+    EXPECT_TRUE(pool.sent_to(2, "rogue")) << "not outstanding: a duplicate, ignored anyway";
+}
+
+// A planner that lists its jobs and never answers (the fake planner) loses them at
+// their deadline, keeps its slots taken while it lists them, and is demoted.
+TEST(PlannerPool, JobsPastTheirDeadlineMoveAndTheirHolderIsDemoted) {
+    PoolConfig config{10.0, 0.3, 1};
+    config.job_deadline_s = 1.0;
+    PlannerPool pool(config);
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 2), now);
+    pool.heartbeat(beat("b", 1), now);
+    EXPECT_EQ(pool.submit(1, job(1), now)[0].planner, "a");
+    EXPECT_EQ(pool.submit(1, job(2), now)[0].planner, "b");
+    EXPECT_EQ(pool.submit(1, job(3), now)[0].planner, "a");
+    std::vector<envdesign::job_t> sent;
+    EXPECT_TRUE(pool.answer(2, "b", sent, now + 100ms)); // fast: the deadline stays 1 s
+    EXPECT_TRUE(sent.empty());
+    pool.heartbeat(beat("a", 2, {1, 3}), now + 500ms);
+    pool.heartbeat(beat("b", 1), now + 500ms);
+    PlannerPool::Events events;
+    pool.heartbeat(beat("a", 2, {1, 3}), now + 1100ms);
+    sent = pool.expire(now + 1100ms, &events);
+    ASSERT_EQ(sent.size(), 1u) << "b's one slot takes one; a's stay taken";
+    EXPECT_EQ(sent[0].planner, "b");
+    EXPECT_EQ(sent[0].attempt, 1);
+    EXPECT_TRUE(pool.demoted("a"));
+    EXPECT_EQ(pool.counters().deadlines_missed, 2);
+    EXPECT_EQ(pool.counters().planners_demoted, 1);
+    EXPECT_NE(std::find_if(events.begin(), events.end(),
+                           [](const std::string &e) {
+                               return e.find("planner a missed 2 job deadlines in a row: "
+                                             "demoted") != std::string::npos;
+                           }),
+              events.end());
+    // The fake keeps listing them: its slots stay taken, the other job waits for b.
+    EXPECT_TRUE(pool.heartbeat(beat("a", 2, {1, 3}), now + 1200ms).empty());
+    std::int64_t at_b = sent[0].job_id, waiting = at_b == 1 ? 3 : 1;
+    sent.clear();
+    EXPECT_TRUE(pool.answer(at_b, "b", sent, now + 1300ms));
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0].job_id, waiting);
+    EXPECT_EQ(sent[0].planner, "b");
+    // b is busy and a lets go of its jobs: a demoted planner still works when no one else can.
+    auto to_a = pool.submit(1, job(4), now + 1400ms);
+    EXPECT_TRUE(to_a.empty());
+    to_a = pool.heartbeat(beat("a", 2), now + 1400ms);
+    ASSERT_EQ(to_a.size(), 1u);
+    EXPECT_EQ(to_a[0].planner, "a");
+    // An answer in time clears the demotion.
+    EXPECT_TRUE(pool.answer(4, "a", sent, now + 1500ms));
+    EXPECT_FALSE(pool.demoted("a"));
+}
+
+TEST(PlannerPool, LateAnswersCountAndStretchTheDeadline) {
+    PoolConfig config{10.0, 0.3, 1};
+    config.job_deadline_s = 1.0;
+    PlannerPool pool(config);
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.heartbeat(beat("b", 1), now);
+    std::string first = pool.submit(1, job(1), now)[0].planner;
+    auto moved = pool.expire(now + 1100ms);
+    ASSERT_EQ(moved.size(), 1u);
+    EXPECT_NE(moved[0].planner, first);
+    std::vector<envdesign::job_t> sent;
+    EXPECT_TRUE(pool.answer(1, first, sent, now + 2s)) << "slow, not wrong: the first answer";
+    EXPECT_DOUBLE_EQ(pool.deadline_s(), 8.0) << "4 x the 2 s it took";
+    EXPECT_FALSE(pool.demoted(first)) << "one miss only";
+    EXPECT_EQ(pool.capacity(), 2);
+    EXPECT_EQ(pool.submit(1, job(2), now + 2s).size(), 1u) << "its slot is free again";
 }
 
 } // namespace

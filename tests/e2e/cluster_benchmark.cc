@@ -1,11 +1,16 @@
-// cluster_benchmark [SPEC] [--repeat N] [--jobs-per-slot K]: evaluations per second and the time
-// added per evaluation by the networked services (coordinator + 1 or 2 planner processes over udpm
-// on loopback, one worker each) against the in-process evaluator with one worker, on a design
-// problem with many cheap evaluations (default: tests/e2e/data/warehouse-small/signs-3).
+// cluster_benchmark [SPEC] [--repeat N] [--jobs-per-slot K] [--auth]: evaluations per second and
+// the time added per evaluation by the networked services (coordinator + 1 or 2 planner processes
+// over udpm on loopback, one worker each) against the in-process evaluator with one worker, on a
+// design problem with many cheap evaluations (default: tests/e2e/data/warehouse-small/signs-3).
 // Not run by ctest: `build/bin/cluster_benchmark`. Targets (issue 5): under 1 ms added per
 // evaluation; 2 planners at least 1.8 times 1.
+// --auth: the cost of bus keys instead (issue 10): the same clusters without and with a key,
+// runs alternating between the two; target under 5% fewer evaluations per second.
 
 #include "local_cluster.h"
+
+#include "bus/auth.h"
+#include "bus/log.h"
 
 #include "design/design_search.h"
 #include "design/design_spec.h"
@@ -53,8 +58,10 @@ std::string fresh_copy(const std::string &spec) {
     return copy.string();
 }
 
-Run remote_run(const std::string &spec, const std::string &url) {
-    client::Result r = client::run_design_remote(fresh_copy(spec), url);
+Run remote_run(const std::string &spec, const std::string &url, const std::string &key = "") {
+    client::Options options;
+    options.key_file = key;
+    client::Result r = client::run_design_remote(fresh_copy(spec), url, options);
     if (r.exit_code != 0) {
         std::fprintf(stderr, "remote run failed: %s\n", r.error.c_str());
         return {1e9, 0};
@@ -112,6 +119,73 @@ int benchmark(const std::string &spec, int repeat, const std::string &jobs_per_s
     return added_ms < 1 && speedup >= 1.8 ? 0 : 1;
 }
 
+// The CPU cost of signing and of verifying one message of `size` bytes, in microseconds.
+std::pair<double, double> sign_verify_us(std::size_t size) {
+    bus::KeyRing ring;
+    ring.keys.push_back({"bench", std::string(32, 'b')});
+    bus::Signer signer(ring);
+    bus::Verifier verifier(ring);
+    bus::ReplayGuard guard;
+    std::string payload(size, 'x');
+    constexpr int N = 20000;
+    std::vector<std::string> signed_messages;
+    signed_messages.reserve(N);
+    auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < N; ++i)
+        signed_messages.push_back(signer.sign(bus::JOB, payload.data(), payload.size()));
+    auto t1 = std::chrono::steady_clock::now();
+    int ok = 0;
+    for (const auto &m : signed_messages)
+        ok += verifier.verify(bus::JOB, m.data(), m.size(), guard, bus::now_utime()).ok();
+    auto t2 = std::chrono::steady_clock::now();
+    if (ok != N)
+        std::fprintf(stderr, "only %d of %d verified\n", ok, N);
+    auto us = [](auto d) { return std::chrono::duration<double, std::micro>(d).count() / N; };
+    return {us(t1 - t0), us(t2 - t1)};
+}
+
+// Without and with a bus key, runs alternating so that both see the same machine load.
+int auth_benchmark(const std::string &spec, int repeat, const std::string &jobs_per_slot) {
+    std::string key = (std::filesystem::temp_directory_path() /
+                       ("envdesign-bench-key-" + std::to_string(getpid())))
+                          .string();
+    std::ofstream(key) << "bench " << std::string(64, 'b') << "\n";
+    std::filesystem::permissions(key, std::filesystem::perms::owner_read |
+                                          std::filesystem::perms::owner_write);
+    for (std::size_t size : {200, 2000, 32768}) {
+        auto [sign, verify] = sign_verify_us(size);
+        std::printf("a %zu-byte message: signing %.2f us, verifying %.2f us\n", size, sign, verify);
+    }
+    std::printf("spec: %s, median of %d runs each, alternating\n", spec.c_str(), repeat);
+    double worst = 0;
+    for (int planners = 1; planners <= 2; ++planners) {
+        std::vector<std::string> flags = {"--jobs-per-slot", jobs_per_slot, "--stored-evaluations",
+                                          "0"};
+        LocalCluster plain(planners, flags);
+        LocalCluster keyed(planners, flags, key);
+        remote_run(spec, plain.url());
+        remote_run(spec, keyed.url(), key);
+        std::vector<Run> without, with;
+        for (int i = 0; i < repeat; ++i) {
+            without.push_back(remote_run(spec, plain.url()));
+            with.push_back(remote_run(spec, keyed.url(), key));
+        }
+        Run a = median_of(repeat, [&, i = 0]() mutable { return without[i++]; });
+        Run b = median_of(repeat, [&, i = 0]() mutable { return with[i++]; });
+        double slower = 100 * (1 - b.per_second() / a.per_second());
+        worst = std::max(worst, slower);
+        std::printf("%d planner(s): without key %9.1f evaluations/s %7.3f ms/evaluation | with "
+                    "key %9.1f evaluations/s %7.3f ms/evaluation | %+.3f ms/evaluation, %.1f%% "
+                    "slower\n",
+                    planners, a.per_second(), 1000 * a.seconds / a.evaluations, b.per_second(),
+                    1000 * b.seconds / b.evaluations,
+                    1000 * (b.seconds / b.evaluations - a.seconds / a.evaluations), slower);
+    }
+    std::filesystem::remove(key);
+    std::printf("signing costs at most %.1f%% of evaluations per second (target < 5%%)\n", worst);
+    return worst < 5 ? 0 : 1;
+}
+
 } // namespace
 } // namespace envdesign::e2e
 
@@ -119,16 +193,20 @@ int main(int argc, char **argv) {
     std::string spec = envdesign::e2e::source("tests/e2e/data/warehouse-small/signs-3.textproto");
     int repeat = 5;
     std::string jobs_per_slot = "2";
+    bool auth = false;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (a == "--repeat" && i + 1 < argc)
+        if (a == "--auth")
+            auth = true;
+        else if (a == "--repeat" && i + 1 < argc)
             repeat = std::max(1, std::atoi(argv[++i]));
         else if (a == "--jobs-per-slot" && i + 1 < argc)
             jobs_per_slot = argv[++i];
         else
             spec = a;
     }
-    int code = envdesign::e2e::benchmark(spec, repeat, jobs_per_slot);
+    int code = auth ? envdesign::e2e::auth_benchmark(spec, repeat, jobs_per_slot)
+                    : envdesign::e2e::benchmark(spec, repeat, jobs_per_slot);
     std::filesystem::remove_all(std::filesystem::temp_directory_path() /
                                 ("envdesign-bench-" + std::to_string(getpid())));
     return code;

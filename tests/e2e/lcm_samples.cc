@@ -1,7 +1,8 @@
 // lcm_samples URL [--count N] [--period-ms MS]: publishes one well-formed message of each
 // envdesign type on its channel, N times (default 1), for the LCM tool checks
 // (lcm_tools_test.sh): a normal run never sends some of them (a cancel, a spec need). The
-// samples name no real coordinator or planner, so services on the URL ignore them.
+// samples name no real coordinator or planner, so services on the URL ignore them. Signed
+// with $ENVDESIGN_KEY_FILE when it is set, as the services are.
 
 #include "bus/bus.h"
 #include "bus/channels.h"
@@ -103,8 +104,13 @@ int main(int argc, char **argv) {
         std::string flag = argv[i];
         (flag == "--count" ? count : period_ms) = std::atoi(argv[i + 1]);
     }
-    bus::Bus bus(argv[1], std::make_shared<spdlog::logger>(
-                              "samples", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    std::shared_ptr<const bus::KeyRing> keys; // signed like the services when they are
+    if (auto path = bus::key_file_path(""))
+        keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(*path));
+    bus::Bus bus(argv[1],
+                 std::make_shared<spdlog::logger>("samples",
+                                                  std::make_shared<spdlog::sinks::null_sink_mt>()),
+                 keys);
     for (int i = 0; i < count; ++i) {
         publish_all(bus);
         std::this_thread::sleep_for(std::chrono::milliseconds(period_ms));

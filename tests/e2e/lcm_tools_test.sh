@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# lcm_tools_test.sh BUILD_DIR: LCM's own tools on envdesign traffic (issue 5, "must show").
+# lcm_tools_test.sh BUILD_DIR [--key]: LCM's own tools on envdesign traffic (issue 5, "must
+# show"). --key: every process signs with a bus key (ENVDESIGN_KEY_FILE), so the traffic
+# carries authentication trailers (common/bus/auth.h) that LCM's Java decoders must skip.
 #   1. deploy/cluster.sh starts a coordinator and 2 planners; lcm-logger records a design
 #      run and one sample of every message type;
 #   2. lcm-spy (deploy/lcm-spy.sh --check, under Xvfb) decodes all nine ENVDESIGN_ channels;
@@ -21,6 +23,11 @@ cleanup() {
     rm -rf "$work"
 }
 trap cleanup EXIT
+if [ "${2:-}" = --key ]; then
+    echo "k1 $(head -c 32 /dev/urandom | od -An -tx1 | tr -d ' \n')" >"$work/bus.key"
+    chmod 600 "$work/bus.key"
+    export ENVDESIGN_KEY_FILE=$work/bus.key
+fi
 export ENVDESIGN_BIN=$build/bin ENVDESIGN_LCM_JAR=$build/lcmtypes/envdesign_lcmtypes.jar
 
 lcm_jar=$(pkg-config --variable=classpath lcm-java 2>/dev/null || echo /usr/share/java/lcm.jar)
@@ -44,10 +51,14 @@ grep -q '"status":"optimal"' "$work/result.json"
 
 echo "== 2. lcm-spy decodes every channel"
 if command -v xvfb-run >/dev/null && [ -f /usr/share/java/jchart2d.jar ]; then
-    "$build/bin/lcm_samples" "$url" --count 40 --period-ms 100 &
+    # Samples until the spy has checked: Java and Xvfb may take seconds to start on a busy
+    # machine, and a spy that starts after the samples end hears only heartbeats.
+    "$build/bin/lcm_samples" "$url" --count 600 --period-ms 100 &
     samples=$!
+    pids+=("$samples")
     bash "$root/deploy/lcm-spy.sh" --lcm-url "$url" --check 3
-    wait "$samples"
+    kill "$samples" 2>/dev/null || true
+    wait "$samples" || true
 else
     echo "SKIPPED: no xvfb-run or jchart2d (deploy/install-deps.sh installs them)"
 fi

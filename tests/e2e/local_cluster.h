@@ -31,9 +31,9 @@ inline std::string binary(const std::string &name) {
     return std::string(ENVDESIGN_BIN_DIR) + "/" + name;
 }
 
-// A URL of our own for this test process.
-inline std::string unique_url() {
-    return "udpm://239.255.76.67:" + std::to_string(40000 + getpid() % 20000) +
+// A URL of our own for this test process; `n` > 0 for more clusters at once.
+inline std::string unique_url(int n = 0) {
+    return "udpm://239.255.76.67:" + std::to_string(40000 + (getpid() + 7919 * n) % 20000) +
            "?ttl=0&recv_buf_size=4194304";
 }
 
@@ -42,9 +42,12 @@ using testing::Process;
 // Hears heartbeats, to know which planners the coordinator can see.
 class HeartbeatWatcher {
 public:
-    explicit HeartbeatWatcher(const std::string &url)
-        : bus_(url, std::make_shared<spdlog::logger>(
-                        "watcher", std::make_shared<spdlog::sinks::null_sink_mt>())) {
+    explicit HeartbeatWatcher(const std::string &url,
+                              std::shared_ptr<const bus::KeyRing> keys = nullptr)
+        : bus_(url,
+               std::make_shared<spdlog::logger>("watcher",
+                                                std::make_shared<spdlog::sinks::null_sink_mt>()),
+               std::move(keys)) {
         sub_ = bus_.subscribe<envdesign::planner_heartbeat_t>(
             bus::HEARTBEAT, [this](const envdesign::planner_heartbeat_t &b) {
                 if (!b.stopping)
@@ -67,9 +70,16 @@ private:
 
 class LocalCluster {
 public:
-    explicit LocalCluster(int planners, std::vector<std::string> coordinator_flags = {})
-        : url_(unique_url()), dir_(std::filesystem::temp_directory_path() /
-                                   ("envdesign-e2e-" + std::to_string(getpid()))) {
+    // `key_file`: every service signs and verifies with it (empty: no keys).
+    explicit LocalCluster(int planners, std::vector<std::string> coordinator_flags = {},
+                          std::string key_file = "")
+        : url_(unique_url(alive_++)),
+          dir_(std::filesystem::temp_directory_path() /
+               ("envdesign-e2e-" + std::to_string(getpid()) + "-" + std::to_string(alive_))),
+          key_file_(std::move(key_file)),
+          watcher_(url_, key_file_.empty() ? nullptr
+                                           : std::make_shared<const bus::KeyRing>(
+                                                 bus::load_key_file(key_file_))) {
         std::filesystem::create_directories(dir_);
         std::vector<std::string> args = {binary("envdesign-coordinator"),
                                          "--lcm-url",
@@ -79,6 +89,7 @@ public:
                                          "--planner-timeout",
                                          "0.5"};
         args.insert(args.end(), coordinator_flags.begin(), coordinator_flags.end());
+        add_key_flag(args);
         coordinator_args_ = args;
         coordinator_ = std::make_unique<Process>(args, (dir_ / "coordinator.log").string());
         for (int i = 0; i < planners; ++i)
@@ -101,6 +112,7 @@ public:
                 << logs();
     }
     ~LocalCluster() {
+        --alive_;
         planners_.clear();
         coordinator_.reset();
         if (!::testing::Test::HasFailure())
@@ -113,6 +125,7 @@ public:
         std::vector<std::string> args = {
             binary("envdesign-planner"), "--lcm-url", url_, "--name", name, "--heartbeat", "0.1"};
         args.insert(args.end(), flags.begin(), flags.end());
+        add_key_flag(args);
         planners_.push_back(std::make_unique<Process>(args, (dir_ / (name + ".log")).string()));
         EXPECT_TRUE(watcher_.wait_for(name)) << name << " never beat";
         // Heard here is not yet heard by the coordinator, which may still be starting.
@@ -121,6 +134,7 @@ public:
     }
 
     const std::string &url() const { return url_; }
+    const std::string &key_file() const { return key_file_; }
     Process &coordinator() { return *coordinator_; }
     Process &planner(int i) { return *planners_.at(i); }
     std::string logs() {
@@ -131,6 +145,12 @@ public:
     }
 
 private:
+    void add_key_flag(std::vector<std::string> &args) const {
+        if (!key_file_.empty()) {
+            args.push_back("--key-file");
+            args.push_back(key_file_);
+        }
+    }
     // True once the coordinator logged that `name` joined.
     bool coordinator_knows(const std::string &name, double timeout_s = 10) {
         auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
@@ -143,9 +163,11 @@ private:
         return false;
     }
 
+    static inline int alive_ = 0; // clusters of this process at once: each has its own port
     std::string url_;
     std::filesystem::path dir_;
-    HeartbeatWatcher watcher_{url_};
+    std::string key_file_;
+    HeartbeatWatcher watcher_;
     std::vector<std::string> coordinator_args_;
     int restarts_ = 0;
     std::unique_ptr<Process> coordinator_;

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """python_client_test.py BUILD_DIR: the Python client (clients/python) against a local
 cluster (deploy/cluster.sh): the self-contained run's design, a spec far larger than a
-datagram (LCM fragments both ways), bad input, and no coordinator."""
+datagram (LCM fragments both ways), bad input, and no coordinator; and with bus keys: signed
+requests and results with a keyed cluster, an unsigned client unheard, the trailer's checks."""
 import json
 import os
 import shutil
@@ -14,6 +15,7 @@ BUILD = os.path.abspath(sys.argv.pop(1))
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 os.environ["ENVDESIGN_PYTHON_TYPES"] = os.path.join(BUILD, "python")
 sys.path.insert(0, os.path.join(ROOT, "clients", "python"))
+import envdesign_auth  # noqa: E402
 import envdesign_client  # noqa: E402
 
 URL = f"udpm://239.255.76.67:{20001 + (os.getpid() % 10000) * 2}?ttl=0"
@@ -79,6 +81,80 @@ class PythonClient(unittest.TestCase):
                                     URL.replace(URL.split(":")[-1].split("?")[0], "19999"),
                                     give_up_after_s=1, resend_after_s=0.3)
         self.assertEqual(caught.exception.exit_code, 1)
+
+
+class PythonClientWithKey(unittest.TestCase):
+    """A cluster whose services sign and verify with a key (the C++ side of the trailer)."""
+    url = URL.replace(URL.split(":")[-1].split("?")[0], str(20002 + (os.getpid() % 10000) * 2))
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp()
+        cls.key = os.path.join(cls.work, "bus.key")
+        with open(cls.key, "w") as f:
+            f.write("# test key\nk1 " + "5a" * 32 + "\n")
+        os.chmod(cls.key, 0o600)
+        cls.cluster = ["bash", os.path.join(ROOT, "deploy", "cluster.sh")]
+        cls.env = dict(os.environ, ENVDESIGN_BIN=os.path.join(BUILD, "bin"))
+        subprocess.run(cls.cluster + ["start", "--planners", "1", "--lcm-url", cls.url, "--dir",
+                                      os.path.join(cls.work, "cluster"), "--key-file", cls.key],
+                       check=True, env=cls.env)
+
+    @classmethod
+    def tearDownClass(cls):
+        subprocess.run(cls.cluster + ["stop", "--dir", os.path.join(cls.work, "cluster")],
+                       env=cls.env)
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def test_signed_request_gets_the_self_contained_result(self):
+        spec = os.path.join(ROOT, "examples", "restaurant", "c-two-tasks-t10.textproto")
+        result, code = envdesign_client.design(spec, self.url, give_up_after_s=10,
+                                               key_file=self.key)
+        self.assertEqual(code, 0)
+        want = self_contained(spec)
+        for key in SAME:
+            self.assertEqual(result[key], want[key], key)
+
+    def test_unsigned_request_is_not_heard(self):
+        with self.assertRaises(envdesign_client.RemoteError) as caught:
+            envdesign_client.design(os.path.join(ROOT, "examples", "restaurant",
+                                                 "a-one-task-t1.textproto"), self.url,
+                                    give_up_after_s=1.5, resend_after_s=0.3)
+        self.assertEqual(caught.exception.exit_code, 1)
+        with open(os.path.join(self.work, "cluster", "coordinator.log")) as f:
+            log = f.read()
+        self.assertIn("dropped a message on ENVDESIGN_REQUEST: unauthenticated", log)
+
+    def test_key_file_others_can_read_is_refused(self):
+        loose = os.path.join(self.work, "loose.key")
+        shutil.copy(self.key, loose)
+        os.chmod(loose, 0o644)
+        with self.assertRaises(envdesign_auth.KeyFileError) as caught:
+            envdesign_auth.load_key_file(loose)
+        self.assertIn("accessible by group or others", str(caught.exception))
+
+
+class Trailer(unittest.TestCase):
+    keys = envdesign_auth.parse_keys("new " + "11" * 32 + "\nold " + "22" * 32, "keys")
+
+    def test_round_trip_tamper_replay_and_rotation(self):
+        sender, receiver = envdesign_auth.Auth(self.keys), envdesign_auth.Auth(self.keys)
+        wire = sender.sign("ENVDESIGN_CANCEL", b"payload")
+        self.assertEqual(wire[:7], b"payload")  # what LCM's decoders read
+        self.assertEqual(receiver.verify("ENVDESIGN_CANCEL", wire), b"payload")
+        self.assertIsNone(receiver.verify("ENVDESIGN_CANCEL", wire))
+        self.assertIsNone(receiver.verify("ENVDESIGN_RESULT", sender.sign("ENVDESIGN_CANCEL", b"x")))
+        tampered = bytearray(sender.sign("ENVDESIGN_CANCEL", b"payload"))
+        tampered[0] ^= 1
+        self.assertIsNone(receiver.verify("ENVDESIGN_CANCEL", bytes(tampered)))
+        self.assertIsNone(receiver.verify("ENVDESIGN_CANCEL", b"payload"))
+        old_signer = envdesign_auth.Auth(self.keys[1:])
+        self.assertEqual(receiver.verify("ENVDESIGN_CANCEL", old_signer.sign("ENVDESIGN_CANCEL", b"o")),
+                         b"o")
+        self.assertEqual(receiver.drops, {("ENVDESIGN_CANCEL", "replayed"): 1,
+                                          ("ENVDESIGN_RESULT", "bad-mac"): 1,
+                                          ("ENVDESIGN_CANCEL", "bad-mac"): 1,
+                                          ("ENVDESIGN_CANCEL", "unauthenticated"): 1})
 
 
 if __name__ == "__main__":

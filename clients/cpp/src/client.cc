@@ -102,25 +102,40 @@ public:
                 return cancel("the client was stopped");
             if (since(heard_) >= options_.give_up_after_s)
                 return failure(1, "no coordinator answered on " + bus_.url());
-            if (since(sent_) >= options_.resend_after_s && since(heard_) >= options_.resend_after_s)
-                send(); // the request or the coordinator's answers were lost
+            if (since(sent_) >= options_.resend_after_s &&
+                since(heard_) >= options_.resend_after_s) {
+                coordinator_.reset(); // it went silent: whoever takes the request now
+                send();               // the request or the coordinator's answers were lost
+            }
         }
         return finish(*result_);
     }
 
 private:
-    bool mine(std::int64_t request_id, const std::string &client) const {
-        return request_id == request_.request_id && client == request_.sender;
+    // Ours, and from the coordinator that took the request: the first to answer, until it
+    // goes silent. Another one's answers (a second coordinator on the bus, a rogue under
+    // another name) are ignored.
+    template <typename Message> bool mine(const Message &m) {
+        if (m.request_id != request_.request_id || m.client != request_.sender)
+            return false;
+        if (!coordinator_)
+            coordinator_ = m.sender;
+        if (m.sender == *coordinator_)
+            return true;
+        bus_.log().warn("request {} | ignored a {} from {}: {} took the request",
+                        bus::request_name(request_.sender, request_.request_id),
+                        Message::getTypeName(), m.sender, *coordinator_);
+        return false;
     }
     void on_progress(const envdesign::design_progress_t &p) {
-        if (!mine(p.request_id, p.client))
+        if (!mine(p))
             return;
         heard_ = Clock::now();
         if (options_.on_progress)
             options_.on_progress(progress_of(p));
     }
     void on_result(const envdesign::design_result_t &r) {
-        if (mine(r.request_id, r.client))
+        if (mine(r))
             result_ = r;
     }
     void send() {
@@ -162,6 +177,7 @@ private:
     Clock::time_point sent_ = Clock::now();
     Clock::time_point heard_ = Clock::now();
     std::optional<envdesign::design_result_t> result_;
+    std::optional<std::string> coordinator_;
 };
 
 std::int64_t new_request_id() {
@@ -206,8 +222,15 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
     request.prune = *prune;
     request.search = *search;
     request.heuristic = *heuristic;
+    std::shared_ptr<const bus::KeyRing> keys;
     try {
-        bus::Bus bus(bus::with_receive_buffer(url), client_logger(request.sender));
+        if (auto path = bus::key_file_path(options.key_file))
+            keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(*path));
+    } catch (const bus::KeyFileError &e) {
+        return failure(2, std::string("--key-file: ") + e.what());
+    }
+    try {
+        bus::Bus bus(bus::with_receive_buffer(url), client_logger(request.sender), keys);
         return RemoteRun(bus, std::move(request), options).run();
     } catch (const std::exception &e) {
         return failure(1, e.what());

@@ -48,6 +48,9 @@ struct Options {
     double timeout_s = 0;            // stop waiting (and cancel) after this; 0: never
     double resend_after_s = 3;       // silence after which the request is sent again
     double give_up_after_s = 30;     // silence after which no coordinator is assumed
+    // Bus keys (deploy/LAN.md); empty: $ENVDESIGN_KEY_FILE, else an unauthenticated bus. A
+    // key file that cannot be used is exit code 2.
+    std::string key_file;
     // Called on the calling thread for each progress message.
     std::function<void(const Progress &)> on_progress;
     // Polled on the calling thread (every 50 ms); true: cancel the request as a timeout
