@@ -71,6 +71,7 @@ struct DesignCounters {
     long long configurations_pruned = 0;    // never generated: --prune relevant left them out
     long long tasks_inherited = 0;          // witness search: task evaluations kept from a subset
     long long configurations_probed = 0;    // witness search: designs evaluated to learn plans
+                                            // (probes, and designs stored earlier)
     EvaluatorCounters evaluator;
     double seconds = 0;
 };

@@ -3,6 +3,7 @@
 #include "design/evaluation_record.h"
 #include "design/lifted_key.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace envdesign::design {
@@ -93,6 +94,29 @@ void EvaluationStore::forget(const TaskKey &task) {
     std::lock_guard lock(mutex_);
     std::erase_if(entries_, [&](const auto &e) { return e.first.second == task; });
     std::erase_if(robot_bounds_, [&](const auto &e) { return e.first.second == task; });
+}
+
+std::vector<Configuration> EvaluationStore::configurations_with(const std::vector<TaskKey> &tasks,
+                                                                std::size_t limit) const {
+    std::lock_guard lock(mutex_);
+    std::vector<Configuration> out;
+    const Configuration *last = nullptr;
+    // Entries are ordered by configuration first: count each configuration's tasks in a run.
+    std::size_t found = 0;
+    auto close = [&] {
+        if (last && found == tasks.size() && out.size() < limit)
+            out.push_back(*last);
+    };
+    for (const auto &[key, evaluation] : entries_) {
+        if (!last || key.first != *last) {
+            close();
+            last = &key.first;
+            found = 0;
+        }
+        found += std::find(tasks.begin(), tasks.end(), key.second) != tasks.end();
+    }
+    close();
+    return out;
 }
 
 std::size_t EvaluationStore::size() const {

@@ -64,6 +64,10 @@ public:
     // Forgets every evaluation and bound of one task, in memory (records in the file stay
     // true: they are named by content).
     void forget(const TaskKey &task);
+    // The configurations with an evaluation in memory for every one of `tasks`, at most
+    // `limit` of them.
+    std::vector<Configuration> configurations_with(const std::vector<TaskKey> &tasks,
+                                                   std::size_t limit) const;
     std::size_t size() const;    // evaluations in memory
     std::size_t records() const; // evaluations and bounds in memory
     bool durable() const { return db_ != nullptr; }

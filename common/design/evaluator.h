@@ -68,6 +68,10 @@ public:
     virtual void evaluate(const std::vector<ConfigurationEvaluation> &batch,
                           const Deadline &deadline, const EvaluationCallbacks &callbacks) = 0;
     virtual EvaluatorCounters counters() const = 0;
+    // Configurations it can answer in full without a planner (an evaluator over stored
+    // evaluations: a new task distribution is a re-weighting); the witness search learns
+    // from them first. At most `limit` of them.
+    virtual std::vector<Configuration> known_configurations(std::size_t /*limit*/) { return {}; }
 };
 
 } // namespace envdesign::design

@@ -35,6 +35,13 @@ void StoredEvaluator::keep_robot_bound(const Configuration &configuration, int t
 
 // What the store adds to what the search already knows (status COMPLETE when every task
 // is known).
+std::vector<Configuration> StoredEvaluator::known_configurations(std::size_t limit) {
+    std::vector<TaskKey> keys;
+    for (int t = 0; t < static_cast<int>(problem_.tasks.size()); ++t)
+        keys.push_back(key(t));
+    return store_.configurations_with(keys, limit);
+}
+
 ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluation &request) {
     ConfigurationEvaluation e = request;
     int tasks = static_cast<int>(problem_.tasks.size());

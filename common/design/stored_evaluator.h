@@ -40,6 +40,8 @@ public:
                   const EvaluationCallbacks &callbacks) override;
     // The inner evaluator's counters: configurations answered from the store add nothing.
     EvaluatorCounters counters() const override { return inner_.counters(); }
+    // Configurations stored for every task of the problem.
+    std::vector<Configuration> known_configurations(std::size_t limit) override;
 
     // The stored evaluation of task index `task` under `configuration`.
     std::optional<TaskExplicability> find(const Configuration &configuration, int task);

@@ -134,6 +134,20 @@ bool DesignLearner::prove_by_hitting_sets() {
                                                                             : nullptr);
     }
     HittingSetMaster master(problem_, bound_, std::move(facts), options_.max_design_size);
+    // Designs the evaluator answers without planning (stored from earlier searches of the
+    // same models) teach their plans first, so a re-design after drift plans little.
+    std::set<Configuration> seen;
+    for (const Cone &cone : considered_)
+        seen.insert(cone.design);
+    for (const Configuration &design : evaluator_.known_configurations(1024)) {
+        if (options_.deadline.expired())
+            return false;
+        if (static_cast<int>(design.size()) > max_size_ || seen.count(design))
+            continue;
+        if (!evaluate(design, false))
+            return false;
+        ++result_.counters.configurations_probed;
+    }
     while (!options_.deadline.expired()) {
         double best = result_.best->objective.value;
         auto answer =
@@ -173,12 +187,12 @@ Record DesignLearner::inherited(const Configuration &design, int task) const {
 
 // Evaluates `design` in full, learns its plans and compares it with the best; false when a
 // limit or the deadline stopped it.
-bool DesignLearner::evaluate(const Configuration &design) {
+bool DesignLearner::evaluate(const Configuration &design, bool inherit) {
     ConfigurationEvaluation request = unevaluated(design);
     std::vector<Record> records(tasks_);
     request.tasks.resize(tasks_);
     for (int t = 0; t < tasks_; ++t)
-        if ((records[t] = inherited(design, t))) {
+        if (inherit && (records[t] = inherited(design, t))) {
             request.tasks[t] = values_only(records[t]->evaluation);
             ++result_.counters.tasks_inherited;
         }

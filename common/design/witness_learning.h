@@ -41,7 +41,8 @@ public:
 
 private:
     bool applies() const;
-    bool evaluate(const Configuration &design);
+    // `inherit`: look for its tasks among smaller evaluated designs first.
+    bool evaluate(const Configuration &design, bool inherit = true);
     Record inherited(const Configuration &design, int task) const;
 
     const DesignProblem &problem_;
