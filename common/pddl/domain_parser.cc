@@ -1,6 +1,8 @@
 #include "pddl/name_scope.h"
 #include "pddl/parser.h"
 
+#include <algorithm>
+#include <map>
 #include <set>
 
 namespace envdesign::pddl {
@@ -8,12 +10,22 @@ namespace {
 
 const std::set<std::string> SUPPORTED_REQUIREMENTS = {
     ":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs"};
-const std::set<std::string> UNSUPPORTED_REQUIREMENTS = {
-    ":adl", ":disjunctive-preconditions", ":existential-preconditions",
-    ":universal-preconditions", ":quantified-preconditions", ":conditional-effects",
-    ":fluents", ":numeric-fluents", ":object-fluents", ":durative-actions",
-    ":duration-inequalities", ":continuous-effects", ":derived-predicates",
-    ":timed-initial-literals", ":preferences", ":constraints"};
+const std::set<std::string> UNSUPPORTED_REQUIREMENTS = {":adl",
+                                                        ":disjunctive-preconditions",
+                                                        ":existential-preconditions",
+                                                        ":universal-preconditions",
+                                                        ":quantified-preconditions",
+                                                        ":conditional-effects",
+                                                        ":fluents",
+                                                        ":numeric-fluents",
+                                                        ":object-fluents",
+                                                        ":durative-actions",
+                                                        ":duration-inequalities",
+                                                        ":continuous-effects",
+                                                        ":derived-predicates",
+                                                        ":timed-initial-literals",
+                                                        ":preferences",
+                                                        ":constraints"};
 
 void parse_requirements(const SExpr &section, Domain &domain) {
     for (std::size_t i = 1; i < section.items.size(); ++i) {
@@ -28,14 +40,44 @@ void parse_requirements(const SExpr &section, Domain &domain) {
     }
 }
 
+// Whether `ancestor` is reached from `type` along any declared parent.
+bool reaches(const std::map<std::string, std::vector<std::string>> &parents,
+             const std::string &type, const std::string &ancestor, std::size_t depth = 0) {
+    if (type == ancestor)
+        return true;
+    auto it = parents.find(type);
+    if (it == parents.end() || depth > parents.size())
+        return false;
+    return std::any_of(it->second.begin(), it->second.end(), [&](const std::string &p) {
+        return reaches(parents, p, ancestor, depth + 1);
+    });
+}
+
 void parse_types(const SExpr &section, Domain &domain) {
     auto declared = parse_typed_list(section.items, 1, "type", nullptr);
+    // A type may be listed more than once (IPC 2006's Storage: "area - object", then
+    // "area crate - surface"), as Fast Downward reads it: its parent is the most specific
+    // one listed, which must lie below every other (several unrelated parents would be
+    // multiple inheritance, outside the fragment).
+    std::map<std::string, std::vector<std::string>> parents;
     for (const auto &t : declared) {
         if (t.types.size() != 1)
             throw ParseError(t.location, "a type's parent cannot be an 'either' type");
+        parents[t.name].push_back(t.types[0]);
+    }
+    for (const auto &t : declared) {
         if (domain.type_parent.count(t.name))
-            throw ParseError(t.location, "duplicate type '" + t.name + "'");
-        domain.type_parent[t.name] = t.types[0];
+            continue;
+        const auto &listed = parents.at(t.name);
+        auto most_specific = std::find_if(listed.begin(), listed.end(), [&](const std::string &p) {
+            return std::all_of(listed.begin(), listed.end(),
+                               [&](const std::string &q) { return reaches(parents, p, q); });
+        });
+        if (most_specific == listed.end())
+            throw ParseError(t.location, "type '" + t.name +
+                                             "' is listed under unrelated parents '" + listed[0] +
+                                             "' and '" + listed.back() + "'");
+        domain.type_parent[t.name] = *most_specific;
     }
     // A parent that is never listed itself ("room hall - place") is a type below object,
     // as IPC domains assume.
@@ -58,7 +100,7 @@ std::vector<Predicate> parse_signatures(const SExpr &section, const Domain &doma
     std::set<std::string> seen;
     for (std::size_t i = 1; i < section.items.size(); ++i) {
         const SExpr &p = section.items[i];
-        if (p.is_symbol("-")) {  // a function's result type: "- number"
+        if (p.is_symbol("-")) { // a function's result type: "- number"
             ++i;
             continue;
         }
@@ -67,8 +109,8 @@ std::vector<Predicate> parse_signatures(const SExpr &section, const Domain &doma
         const std::string &name = p.items[0].symbol;
         if (!seen.insert(name).second)
             throw ParseError(p.location, "duplicate " + kind + " '" + name + "'");
-        result.push_back({name, parse_typed_list(p.items, 1, "placeholder", &domain.type_parent),
-                          p.location});
+        result.push_back(
+            {name, parse_typed_list(p.items, 1, "placeholder", &domain.type_parent), p.location});
     }
     return result;
 }
@@ -88,8 +130,8 @@ CostExpression parse_cost(const SExpr &e, const NameScope &scope) {
         if (used != amount.symbol.size() || cost.constant < 0)
             throw std::invalid_argument("not a non-negative integer");
     } catch (const std::exception &) {
-        throw ParseError(amount.location, "action cost '" + amount.symbol +
-                                              "' is not a non-negative integer");
+        throw ParseError(amount.location,
+                         "action cost '" + amount.symbol + "' is not a non-negative integer");
     }
     return cost;
 }
@@ -141,11 +183,11 @@ Action parse_action(const SExpr &e, const Domain &domain) {
     return action;
 }
 
-}  // namespace
+} // namespace
 
 Domain parse_domain(const SExpr &define, const std::string &file) {
-    if (!define.has_head("define") || define.items.size() < 2 || !define.items[1].has_head("domain") ||
-        define.items[1].items.size() != 2)
+    if (!define.has_head("define") || define.items.size() < 2 ||
+        !define.items[1].has_head("domain") || define.items[1].items.size() != 2)
         throw ParseError(define.location, "expected '(define (domain NAME) ...)'");
     Domain domain;
     domain.file = file;
@@ -154,7 +196,8 @@ Domain parse_domain(const SExpr &define, const std::string &file) {
     for (std::size_t i = 2; i < define.items.size(); ++i) {
         const SExpr &section = define.items[i];
         if (!section.is_list || section.items.empty() || section.items[0].is_list)
-            throw ParseError(section.location, "expected a domain section like '(:predicates ...)'");
+            throw ParseError(section.location,
+                             "expected a domain section like '(:predicates ...)'");
         const std::string &head = section.items[0].symbol;
         if (head != ":action" && !sections_seen.insert(head).second)
             throw ParseError(section.location, "duplicate section '" + head + "'");
@@ -186,4 +229,4 @@ Domain parse_domain_file(const std::string &path) {
     return parse_domain(read_sexpr_file(path), path);
 }
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

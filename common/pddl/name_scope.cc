@@ -73,7 +73,8 @@ std::vector<TypedName> parse_typed_list(const std::vector<SExpr> &items, std::si
         if (item.is_list)
             throw ParseError(item.location, "expected a " + kind + " name, found a list");
         // Names in a predicate declaration are placeholders; logistics00 declares (in ?obj ?obj).
-        if (!seen.insert(item.symbol).second && kind != "placeholder")
+        // A type may be listed twice (parse_types picks its parent; IPC 2006's Storage).
+        if (!seen.insert(item.symbol).second && kind != "placeholder" && kind != "type")
             throw ParseError(item.location, "duplicate " + kind + " '" + item.symbol + "'");
         result.push_back({item.symbol, {"object"}, item.location});
     }

@@ -59,9 +59,9 @@ private:
         list.location = here();
         // Recursion depth is bounded so that hostile input fails cleanly, not on the stack.
         if (++depth_ > MAX_DEPTH)
-            throw ParseError(list.location, "parentheses nested more than " +
-                                                std::to_string(MAX_DEPTH) + " deep");
-        advance();  // '('
+            throw ParseError(list.location,
+                             "parentheses nested more than " + std::to_string(MAX_DEPTH) + " deep");
+        advance(); // '('
         while (true) {
             skip_space();
             if (at_end())
@@ -83,6 +83,10 @@ private:
             char c = text_[pos_];
             if (c == '(' || c == ')' || c == ';' || std::isspace(static_cast<unsigned char>(c)))
                 break;
+            // '?' always starts a variable, as in Fast Downward's translator: IPC 2002's
+            // Zenotravel writes "(aircraft?a)".
+            if (c == '?' && !symbol.symbol.empty())
+                break;
             symbol.symbol += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
             advance();
         }
@@ -98,7 +102,7 @@ private:
     int column_ = 1;
 };
 
-}  // namespace
+} // namespace
 
 std::string SExpr::to_string() const {
     if (!is_list)
@@ -123,4 +127,4 @@ SExpr read_sexpr_file(const std::string &path) {
     return read_sexpr(buffer.str(), path);
 }
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

@@ -13,26 +13,37 @@ const std::string DATA = std::string(ENVDESIGN_TEST_DATA);
 const std::string IPC = std::string(ENVDESIGN_SHARED_DIR) + "/benchmarks/ipc/";
 
 TEST(PlanCommand, PrintsTheOptimalPlanInSasPlanFormat) {
-    CommandResult r = run_envdesign("plan " + DATA + "/tiny/domain.pddl " + DATA +
-                                        "/tiny/problem.pddl",
-                                    false);
+    CommandResult r =
+        run_envdesign("plan " + DATA + "/tiny/domain.pddl " + DATA + "/tiny/problem.pddl", false);
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_EQ(r.out, "(move r1 kitchen hub)\n(unlock r1 lab)\n(move r1 hub lab)\n"
                      "; cost = 9 (general cost)\n");
 }
 
 TEST(PlanCommand, UnitCostDomainsSayUnitCost) {
-    CommandResult r = run_envdesign("plan " + IPC + "blocks/domain.pddl " + IPC +
-                                        "blocks/probBLOCKS-4-0.pddl",
-                                    false);
+    CommandResult r = run_envdesign(
+        "plan " + IPC + "blocks/domain.pddl " + IPC + "blocks/probBLOCKS-4-0.pddl", false);
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_NE(r.out.find("; cost = 6 (unit cost)\n"), std::string::npos) << r.out;
 }
 
+// Liberties of real IPC domains (tests/data/liberties, issue 12): planned, optimal cost.
+TEST(PlanCommand, PlansDomainsThatTakeIpcLiberties) {
+    const std::string dir = DATA + "/liberties/";
+    for (const auto &[name, cost] : {std::pair<std::string, int>{"type-listed-twice", 2},
+                                     std::pair<std::string, int>{"variable-glued", 1}}) {
+        CommandResult r = run_envdesign(
+            "plan " + dir + name + "-domain.pddl " + dir + name + "-problem.pddl", false);
+        EXPECT_EQ(r.exit_code, 0) << name << ": " << r.out;
+        EXPECT_NE(r.out.find("; cost = " + std::to_string(cost) + " (unit cost)\n"),
+                  std::string::npos)
+            << name << ": " << r.out;
+    }
+}
+
 TEST(PlanCommand, ProvenUnsolvableExitsThree) {
-    CommandResult r = run_envdesign("plan --json " + DATA + "/bad/ok-domain.pddl " + DATA +
-                                        "/unsolvable-problem.pddl",
-                                    false);
+    CommandResult r = run_envdesign(
+        "plan --json " + DATA + "/bad/ok-domain.pddl " + DATA + "/unsolvable-problem.pddl", false);
     EXPECT_EQ(r.exit_code, 3);
     EXPECT_NE(r.out.find("\"status\":\"unsolvable\""), std::string::npos) << r.out;
 }
@@ -49,10 +60,10 @@ TEST(PlanCommand, TimeLimitExitsFour) {
 TEST(PlanCommand, TimeLimitHoldsWhileGrounding) {
     // 40 960 000 reachable actions: grounding alone would take minutes and gigabytes.
     auto start = std::chrono::steady_clock::now();
-    CommandResult r = run_envdesign("plan --json --time-limit 0.5 " + DATA +
-                                        "/huge-grounding/domain.pddl " + DATA +
-                                        "/huge-grounding/problem.pddl",
-                                    false);
+    CommandResult r =
+        run_envdesign("plan --json --time-limit 0.5 " + DATA + "/huge-grounding/domain.pddl " +
+                          DATA + "/huge-grounding/problem.pddl",
+                      false);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(r.exit_code, 4);
@@ -61,9 +72,8 @@ TEST(PlanCommand, TimeLimitHoldsWhileGrounding) {
 }
 
 TEST(PlanCommand, JsonCarriesCostAndSearchStatistics) {
-    CommandResult r = run_envdesign("plan --json " + IPC + "blocks/domain.pddl " + IPC +
-                                        "blocks/probBLOCKS-4-0.pddl",
-                                    false);
+    CommandResult r = run_envdesign(
+        "plan --json " + IPC + "blocks/domain.pddl " + IPC + "blocks/probBLOCKS-4-0.pddl", false);
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_NE(r.out.find("\"cost\":6"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("\"status\":\"solved\""), std::string::npos) << r.out;
@@ -71,5 +81,5 @@ TEST(PlanCommand, JsonCarriesCostAndSearchStatistics) {
     EXPECT_NE(r.out.find("\"expansions\":7"), std::string::npos) << r.out;
 }
 
-}  // namespace
-}  // namespace envdesign::testing
+} // namespace
+} // namespace envdesign::testing

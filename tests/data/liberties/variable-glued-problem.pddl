@@ -1,0 +1,5 @@
+(define (problem variable-glued-1)
+  (:domain variable-glued)
+  (:objects plane c1 c2 c3)
+  (:init (aircraft plane) (city c1) (city c2) (city c3) (at plane c1))
+  (:goal (at plane c3)))
