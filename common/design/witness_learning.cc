@@ -11,9 +11,10 @@ namespace envdesign::design::witness {
 
 DesignLearner::DesignLearner(const DesignProblem &problem, Evaluator &evaluator,
                              const DesignSearchOptions &options, const TouchIndex &index,
-                             SupersetBound &bound, DesignResult &result)
+                             SupersetBound &bound, DesignResult &result,
+                             std::function<void()> report)
     : problem_(problem), evaluator_(evaluator), options_(options), index_(index), bound_(bound),
-      result_(result), tasks_(static_cast<int>(problem.tasks.size())),
+      result_(result), report_(std::move(report)), tasks_(static_cast<int>(problem.tasks.size())),
       max_size_(options.max_design_size > 0 ? options.max_design_size : index.size()),
       lower_bound_(-INF) {}
 
@@ -217,6 +218,8 @@ bool DesignLearner::evaluate(const Configuration &design, bool inherit) {
         tasks.push_back(records[t]->evaluation);
     }
     known_.emplace_back(design, std::move(records));
+    if (report_)
+        report_();
     if (static_cast<int>(design.size()) <= max_size_) {
         consider(design, known_.back().second);
         consider_design(problem_, design, std::move(tasks), result_);

@@ -11,6 +11,7 @@
 #include "design/witness.h"
 #include "design/witness_bound.h"
 
+#include <functional>
 #include <set>
 #include <vector>
 
@@ -18,10 +19,10 @@ namespace envdesign::design::witness {
 
 class DesignLearner {
 public:
-    // All must outlive the learner.
+    // All must outlive the learner; `report` shows progress after each design.
     DesignLearner(const DesignProblem &problem, Evaluator &evaluator,
                   const DesignSearchOptions &options, const TouchIndex &index, SupersetBound &bound,
-                  DesignResult &result);
+                  DesignResult &result, std::function<void()> report);
 
     // Remembers an evaluated configuration of the best-first search (the root first).
     void evaluated(const Node &node);
@@ -51,6 +52,7 @@ private:
     const TouchIndex &index_;
     SupersetBound &bound_;
     DesignResult &result_;
+    std::function<void()> report_;
     int tasks_;
     int max_size_;
     std::optional<Node> root_;

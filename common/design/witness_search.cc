@@ -64,7 +64,7 @@ public:
                   const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
           index_(problem), bound_(problem, index_),
-          learner_(problem, evaluator, options, index_, bound_, result_),
+          learner_(problem, evaluator, options, index_, bound_, result_, [this] { report(); }),
           tasks_(static_cast<int>(problem.tasks.size())) {
         for (int m : bound_.always()) {
             const ModificationClass &c = index_.of(m);
@@ -354,8 +354,8 @@ private:
         if (!progress_)
             return;
         EvaluatorCounters e = evaluator_.counters();
-        SearchProgress p{done_,
-                         generated_,
+        SearchProgress p{done_ + learner_.designs(), // the hitting-set phase's designs too
+                         generated_ + learner_.designs(),
                          result_.best ? result_.best->objective.value : INF,
                          e.planner_runs,
                          e.cache_hits,
