@@ -38,6 +38,7 @@ struct PlannerConfig {
     double park_limit_s = 30; // a job whose spec never comes is dropped after this
     int max_specs = 4;
     int answers_kept = 4096;
+    SpecLimits spec_limits; // what chunks from the bus may make it hold
 };
 
 struct PlannerStats {

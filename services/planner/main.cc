@@ -20,6 +20,10 @@ int main(int argc, char **argv) {
     app.add_option("--max-specs", config.max_specs, "specs kept loaded")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    app.add_option("--max-spec-bytes", config.spec_limits.max_spec_bytes,
+                   "largest spec encoding taken from the bus (chunks of larger ones are dropped)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30))
+        ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))
