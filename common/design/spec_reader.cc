@@ -1,13 +1,13 @@
 #include "design/spec_reader.h"
 
 #include "design/json_positions.h"
+#include "pddl/input_file.h"
 
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
 #include <google/protobuf/util/json_util.h>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -184,12 +184,7 @@ SpecFile read_spec_text(const std::string &text, const std::string &path) {
 }
 
 SpecFile read_spec_file(const std::string &path) {
-    std::ifstream in(path);
-    if (!in)
-        throw pddl::ParseError({path, 0, 0}, "cannot open file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return read_spec_text(buffer.str(), path);
+    return read_spec_text(pddl::read_input_file(path), path);
 }
 
 } // namespace envdesign::design

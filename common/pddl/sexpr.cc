@@ -1,7 +1,8 @@
 #include "pddl/sexpr.h"
 
+#include "pddl/input_file.h"
+
 #include <cctype>
-#include <fstream>
 #include <sstream>
 
 namespace envdesign::pddl {
@@ -59,9 +60,9 @@ private:
         list.location = here();
         // Recursion depth is bounded so that hostile input fails cleanly, not on the stack.
         if (++depth_ > MAX_DEPTH)
-            throw ParseError(list.location, "parentheses nested more than " +
-                                                std::to_string(MAX_DEPTH) + " deep");
-        advance();  // '('
+            throw ParseError(list.location,
+                             "parentheses nested more than " + std::to_string(MAX_DEPTH) + " deep");
+        advance(); // '('
         while (true) {
             skip_space();
             if (at_end())
@@ -98,7 +99,7 @@ private:
     int column_ = 1;
 };
 
-}  // namespace
+} // namespace
 
 std::string SExpr::to_string() const {
     if (!is_list)
@@ -114,13 +115,6 @@ SExpr read_sexpr(const std::string &text, const std::string &file) {
     return Reader(text, file).read_top();
 }
 
-SExpr read_sexpr_file(const std::string &path) {
-    std::ifstream in(path);
-    if (!in)
-        throw ParseError({path, 0, 0}, "cannot open file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return read_sexpr(buffer.str(), path);
-}
+SExpr read_sexpr_file(const std::string &path) { return read_sexpr(read_input_file(path), path); }
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl
