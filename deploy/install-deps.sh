@@ -12,6 +12,7 @@ PACKAGES=(
     openjdk-17-jdk xvfb xauth libjchart2d-java iproute2
     cyclonedds-dev cyclonedds-tools libcycloneddsidl0
     gnuplot-nox  # the interplay plot of tests/benchmarks/paper/run_interplay.py
+    clang libclang-rt-14-dev  # tests/fuzz: libFuzzer, ASan and UBSan runtimes; the clang build
 )
 
 missing=()
