@@ -134,14 +134,19 @@ void file_seeds(const fs::path &source, const fs::path &corpus) {
           read(source / "tests/data/design/bad/unknown-object.json"));
     // Arrivals: (1 config byte) then per arrival: 3 length-prefixed names, sequence, utime
     // selector, clock step, known-problem byte.
-    std::string arrivals(1, '\1');
-    for (std::int64_t sequence : {std::int64_t{1}, std::int64_t{2}, INT64_MAX, std::int64_t{1}}) {
-        for (const char *name : {"p", "s1", "a"})
-            arrivals += std::string(1, static_cast<char>(std::strlen(name))) + name;
-        arrivals.append(reinterpret_cast<const char *>(&sequence), sizeof sequence);
-        arrivals += std::string("\1\1\1", 3);
-    }
-    write(corpus / "intake", "sequences", arrivals);
+    auto arrival = [](const char *site, std::int64_t sequence) {
+        std::string a;
+        for (const char *name : {"p", site, "a"})
+            a += std::string(1, static_cast<char>(std::strlen(name))) + name;
+        a.append(reinterpret_cast<const char *>(&sequence), sizeof sequence);
+        return a + std::string("\1\1\1", 3);
+    };
+    write(corpus / "intake", "sequences",
+          "\1" + arrival("s1", 1) + arrival("s1", 2) + arrival("s1", 5) + arrival("s1", 1));
+    // Near INT64_MAX from two sites: the unseen-numbers counter once overflowed.
+    write(corpus / "intake", "sequences-near-max",
+          "\1" + arrival("s1", INT64_MAX) + arrival("s2", INT64_MAX) + arrival("s3", 1) +
+              arrival("s3", INT64_MAX));
 }
 
 } // namespace
