@@ -44,10 +44,13 @@ grep -q '"status":"optimal"' "$work/result.json"
 
 echo "== 2. lcm-spy decodes every channel"
 if command -v xvfb-run >/dev/null && [ -f /usr/share/java/jchart2d.jar ]; then
-    "$build/bin/lcm_samples" "$url" --count 40 --period-ms 100 &
+    # Samples until the check is done: on a loaded machine Xvfb and the JVM take seconds to
+    # start, and 4 s of samples could end before lcm-spy listens.
+    "$build/bin/lcm_samples" "$url" --count 600 --period-ms 100 &
     samples=$!
     bash "$root/deploy/lcm-spy.sh" --lcm-url "$url" --check 3
-    wait "$samples"
+    kill "$samples" 2>/dev/null || true
+    wait "$samples" || true
 else
     echo "SKIPPED: no xvfb-run or jchart2d (deploy/install-deps.sh installs them)"
 fi
