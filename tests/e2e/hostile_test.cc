@@ -4,8 +4,10 @@
 
 #include "local_cluster.h"
 
+#include "bus/codec.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
+#include "envdesign/job_t.hpp"
 #include "envdesign/spec_chunk_t.hpp"
 
 #include <envdesign/client/client.h>
@@ -96,6 +98,31 @@ TEST(Hostile, ChunkBombLeavesThePlannerSmall) {
     long after = resident_kib(planner);
     EXPECT_LT(after - before, 50 * 1024)
         << "planner grew from " << before << " to " << after << " KiB";
+    EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
+    EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
+}
+
+// A string length of INT_MIN in a message: lcm-gen 1.3.1's decoder overflowed and read
+// gigabytes past the datagram (found by the planner fuzz target). Now it is a malformed
+// message: counted and dropped, by the coordinator and a planner alike.
+TEST(Hostile, NegativeStringLengthIsMalformedNotACrash) {
+    LocalCluster cluster(1);
+    bus::Bus bus(cluster.url(), std::make_shared<spdlog::logger>(
+                                    "attacker", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    envdesign::job_t job{};
+    job.sender = "coordinator";
+    job.planner = "planner-0";
+    envdesign::design_request_t request{};
+    request.request_id = 5;
+    request.sender = "attacker";
+    // Fingerprint (8), utime (8), request_id (8), then the sender's length.
+    auto forged = [](std::string bytes) { return bytes.replace(24, 4, "\x80\0\0\0", 4); };
+    std::string bad_job = forged(bus::encode_message(job));
+    std::string bad_request = forged(bus::encode_message(request));
+    bus.publish_raw(bus::JOB, bad_job.data(), static_cast<int>(bad_job.size()));
+    bus.publish_raw(bus::REQUEST, bad_request.data(), static_cast<int>(bad_request.size()));
+    bus.handle(std::chrono::milliseconds(500));
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
     EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
 }
