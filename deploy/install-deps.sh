@@ -15,6 +15,7 @@ PACKAGES=(
     coinor-libcbc-dev  # the witness search's hitting-set phase (integer programs)
     libsqlite3-dev libssl-dev  # the coordinator's durable evaluations (common/store)
     gnuplot-nox  # the interplay plot of tests/benchmarks/paper/run_interplay.py
+    clang libclang-rt-14-dev  # tests/fuzz: libFuzzer, ASan and UBSan runtimes; the clang build
 )
 
 missing=()

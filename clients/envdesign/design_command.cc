@@ -152,7 +152,7 @@ int run_design(const DesignFlags &flags) {
     }
     printer.finish(result);
     if (flags.json)
-        std::cout << design::design_json(problem, result).dump() << std::endl;
+        std::cout << design::json_text(design::design_json(problem, result)) << std::endl;
     else
         print_text(problem, result);
     if (result.limit_reached)

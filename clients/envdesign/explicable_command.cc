@@ -67,7 +67,7 @@ int run_explicable(const ExplicableFlags &flags) {
         return 2;
     }
     if (flags.json)
-        std::cout << design::explicability_json(result).dump() << std::endl;
+        std::cout << design::json_text(design::explicability_json(result)) << std::endl;
     else
         print_text(result);
     switch (result.status) {

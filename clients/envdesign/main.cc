@@ -10,6 +10,8 @@
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <new>
 
@@ -22,7 +24,19 @@ void set_up_logging(const std::string &level) {
     spdlog::set_default_logger(logger);
 }
 
-}  // namespace
+// Output that did not reach standard output (a full disk) is a failure, whatever the command
+// found: exit 1 with a message instead of 0.
+int with_output_checked(int code) {
+    errno = 0;
+    std::cout.flush();
+    if (std::cout)
+        return code;
+    spdlog::error("cannot write to standard output{}",
+                  errno ? std::string(": ") + std::strerror(errno) : std::string());
+    return 1;
+}
+
+} // namespace
 
 int main(int argc, char **argv) {
     CLI::App app{"envdesign: environment design for explicable robot behaviour"};
@@ -42,7 +56,8 @@ int main(int argc, char **argv) {
     envdesign::cli::add_validate_flags(*validate, validate_flags);
 
     envdesign::cli::ExplicableFlags explicable_flags;
-    auto *explicable = app.add_subcommand("explicable", "most explicable plan of a robot/human pair");
+    auto *explicable =
+        app.add_subcommand("explicable", "most explicable plan of a robot/human pair");
     envdesign::cli::add_explicable_flags(*explicable, explicable_flags);
 
     envdesign::cli::DesignFlags design_flags;
@@ -60,13 +75,13 @@ int main(int argc, char **argv) {
     set_up_logging(log_level);
     try {
         if (*plan)
-            return envdesign::cli::run_plan(plan_flags);
+            return with_output_checked(envdesign::cli::run_plan(plan_flags));
         if (*validate)
-            return envdesign::cli::run_validate(validate_flags);
+            return with_output_checked(envdesign::cli::run_validate(validate_flags));
         if (*explicable)
-            return envdesign::cli::run_explicable(explicable_flags);
+            return with_output_checked(envdesign::cli::run_explicable(explicable_flags));
         if (*design)
-            return envdesign::cli::run_design(design_flags);
+            return with_output_checked(envdesign::cli::run_design(design_flags));
     } catch (const std::bad_alloc &) {
         spdlog::error("out of memory");
         return 4;

@@ -1,5 +1,6 @@
 #include "plan_command.h"
 
+#include "design/result_json.h"
 #include "pddl/parse_error.h"
 #include "planning/planner.h"
 
@@ -68,10 +69,10 @@ void print_json(const planning::PlanReport &report) {
                           {"bytes_per_state", report.statistics.bytes_per_state}};
     if (report.status != search::SearchStatus::SOLVED)
         out["cost"] = nullptr;
-    std::cout << out.dump() << std::endl;
+    std::cout << design::json_text(out) << std::endl;
 }
 
-}  // namespace
+} // namespace
 
 void add_plan_flags(CLI::App &command, PlanFlags &flags) {
     command.add_option("domain", flags.domain, "PDDL domain file")->required();
@@ -90,7 +91,8 @@ int run_plan(const PlanFlags &flags) {
     planning::PlannerOptions options;
     options.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
     options.limits.time_limit_s = flags.time_limit_s;
-    options.limits.memory_limit_bytes = static_cast<std::size_t>(flags.memory_limit_mb * 1024 * 1024);
+    options.limits.memory_limit_bytes =
+        static_cast<std::size_t>(flags.memory_limit_mb * 1024 * 1024);
     planning::PlanReport report;
     try {
         report = planning::plan_files(flags.domain, flags.problem, options);
@@ -110,6 +112,7 @@ int run_plan(const PlanFlags &flags) {
     if (!flags.plan_file.empty() && report.status == search::SearchStatus::SOLVED) {
         std::ofstream out(flags.plan_file);
         out << sas_plan(report);
+        out.close(); // flushes: a full disk shows only here
         if (!out) {
             spdlog::error("cannot write the plan to {}", flags.plan_file);
             return 1;
@@ -118,4 +121,4 @@ int run_plan(const PlanFlags &flags) {
     return exit_code(report.status);
 }
 
-}  // namespace envdesign::cli
+} // namespace envdesign::cli

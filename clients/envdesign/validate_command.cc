@@ -31,4 +31,4 @@ int run_validate(const ValidateFlags &flags) {
     }
 }
 
-}  // namespace envdesign::cli
+} // namespace envdesign::cli

@@ -1,6 +1,7 @@
 #include "arrivals/intake.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace envdesign::arrivals {
 namespace {
@@ -12,6 +13,14 @@ bool good_name(const std::string &name, std::size_t max_length) {
         auto u = static_cast<unsigned char>(c);
         return u < 0x20 || u == 0x7f;
     });
+}
+
+// Counters stop at the largest value instead of overflowing: sequence numbers near INT64_MAX
+// (a forged or corrupt sample) would otherwise make them negative on the bus.
+void add_saturating(long long &counter, long long amount) {
+    counter = amount > std::numeric_limits<long long>::max() - counter
+                  ? std::numeric_limits<long long>::max()
+                  : counter + amount;
 }
 
 } // namespace
@@ -91,7 +100,7 @@ Verdict ArrivalIntake::check_fields(const Arrival &a, bool problem_known, int64_
 
 Verdict ArrivalIntake::check_sequence(Site &site, int64_t sequence) {
     if (site.last_sequence == 0) { // the first arrival seen from this site
-        counters_.sequence_unseen += sequence - 1;
+        add_saturating(counters_.sequence_unseen, sequence - 1);
         site.last_sequence = sequence;
         return Verdict::ACCEPTED;
     }
@@ -102,7 +111,7 @@ Verdict ArrivalIntake::check_sequence(Site &site, int64_t sequence) {
     }
     if (sequence <= site.last_sequence)
         return Verdict::DUPLICATE;
-    counters_.sequence_gaps += sequence - site.last_sequence - 1;
+    add_saturating(counters_.sequence_gaps, sequence - site.last_sequence - 1);
     site.last_sequence = sequence;
     return Verdict::ACCEPTED;
 }

@@ -16,8 +16,15 @@ namespace {
 using envdesign::design_progress_t;
 using envdesign::design_request_t;
 
+std::size_t spec_bytes(const envdesign::spec_t &spec) {
+    std::size_t bytes = spec.name.size() + spec.text.size();
+    for (const auto &file : spec.files)
+        bytes += file.path.size() + file.content.size();
+    return bytes;
+}
+
 // Why `r` cannot be served (nullopt: it can).
-std::optional<std::string> request_problem(const design_request_t &r) {
+std::optional<std::string> request_problem(const design_request_t &r, std::size_t max_spec_bytes) {
     if (r.search != design_request_t::SEARCH_WITNESS &&
         r.search != design_request_t::SEARCH_EXHAUSTIVE)
         return "unknown search " + std::to_string(r.search);
@@ -30,6 +37,9 @@ std::optional<std::string> request_problem(const design_request_t &r) {
         return "the time limit is not a number";
     if (r.spec.name.empty())
         return "the spec has no name";
+    if (std::size_t bytes = spec_bytes(r.spec); bytes > max_spec_bytes)
+        return "the spec and its files are " + std::to_string(bytes) + " bytes, more than the " +
+               std::to_string(max_spec_bytes) + " taken";
     return std::nullopt;
 }
 
@@ -99,12 +109,22 @@ void Coordinator::on_request(const design_request_t &request) {
         publish_result(it->second.result);
         return;
     }
-    if (auto problem = request_problem(request)) {
+    if (auto problem = request_problem(request, config_.max_spec_bytes)) {
         bus_.reject(bus::REQUEST, name + ": " + *problem);
         closed_[name] = {error_result(2, "bad request: " + *problem), Clock::now()};
         closed_[name].result.request_id = request.request_id;
         closed_[name].result.client = request.sender;
         publish_result(closed_[name].result);
+        return;
+    }
+    if (auto why = busy(request.sender)) {
+        bus_.log().warn("request {} | refused, busy: {}", name, *why);
+        auto result = error_result(1, "the coordinator is busy (" + *why + "); try again later");
+        result.request_id = request.request_id;
+        result.client = request.sender;
+        publish_result(std::move(result)); // not kept: a repeat later may find room
+        std::lock_guard lock(stats_mutex_);
+        ++stats_.busy;
         return;
     }
     bus_.log().info("request {} | accepted: spec {} with {} file(s)", name, request.spec.name,
@@ -123,6 +143,22 @@ void Coordinator::on_request(const design_request_t &request) {
         ++stats_.accepted;
     }
     start_waiting();
+}
+
+// Why a new request of `client` cannot be taken now (nullopt: it can).
+std::optional<std::string> Coordinator::busy(const std::string &client) const {
+    int mine = 0, active = 0;
+    for (const auto &[name, open] : open_) {
+        mine += open.run->request().sender == client ? 1 : 0;
+        active += open.started ? 1 : 0;
+    }
+    if (mine >= config_.max_per_client)
+        return std::to_string(mine) + " requests of " + client + " are open, at most " +
+               std::to_string(config_.max_per_client);
+    if (active >= config_.max_active && static_cast<int>(waiting_.size()) >= config_.max_waiting)
+        return std::to_string(waiting_.size()) + " requests are waiting, at most " +
+               std::to_string(config_.max_waiting);
+    return std::nullopt;
 }
 
 void Coordinator::on_cancel(const envdesign::cancel_t &cancel) {
@@ -166,7 +202,8 @@ int Coordinator::tick() {
     last_tick_ = now;
     router_.tick();
     for (auto &[name, open] : open_)
-        publish_progress(open, now, false);
+        if (open.started) // waiting ones are told when their client repeats them
+            publish_progress(open, now, false);
     auto expired = now - std::chrono::duration_cast<Clock::duration>(
                              std::chrono::duration<double>(config_.keep_results_s));
     std::erase_if(closed_, [&](const auto &entry) { return entry.second.at < expired; });

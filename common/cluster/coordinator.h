@@ -4,7 +4,11 @@
 // jobs sent to the planners (job_router.h), and publishes ENVDESIGN_PROGRESS and
 // ENVDESIGN_RESULT. Requests are named by (client, request_id): a repeat of an open request
 // gets its progress, a repeat of a finished one its result again (kept keep_results_s).
-// At most max_active requests search at once; the others wait in order.
+// At most max_active requests search at once; the others wait in order, at most max_waiting
+// of them and at most max_per_client open per client: beyond that a request is answered at
+// once with a "busy" error (exit code 1) and not kept, so that the client may send it again
+// later. Progress keep-alives go only to searching requests (a waiting one hears progress
+// when its client repeats it).
 //
 //   bus::Bus bus(url, logger);
 //   Coordinator coordinator(bus, config);
@@ -17,6 +21,7 @@
 #include "bus/bus.h"
 #include "cluster/job_router.h"
 #include "cluster/request_run.h"
+#include "cluster/spec_chunks.h"
 #include "cluster/spec_library.h"
 #include "envdesign/cancel_t.hpp"
 #include "envdesign/spec_need_t.hpp"
@@ -28,9 +33,13 @@
 namespace envdesign::cluster {
 
 struct CoordinatorConfig {
-    std::string instance; // this coordinator's name on the bus
-    std::string work_dir; // scratch space for loading specs
-    int max_active = 4;   // requests searched at once
+    std::string instance;   // this coordinator's name on the bus
+    std::string work_dir;   // scratch space for loading specs
+    int max_active = 4;     // requests searched at once
+    int max_waiting = 32;   // requests waiting for a search slot, from all clients
+    int max_per_client = 8; // requests searching or waiting per client (sender)
+    // The largest spec a request may carry (its text and files); larger is bad input.
+    std::size_t max_spec_bytes = DEFAULT_MAX_SPEC_BYTES;
     PoolConfig pool;
     double grace_s = 1.0;             // after a deadline, LIMIT answers are awaited this long
     double progress_interval_s = 0.1; // progress at most this often per request
@@ -53,6 +62,7 @@ struct CoordinatorStats {
     long long accepted = 0; // distinct requests taken
     long long repeats = 0;  // repeats of a known request
     long long results = 0;  // results published (repeats included)
+    long long busy = 0;     // requests refused as busy
     int open = 0;           // searching or waiting
 };
 
@@ -82,6 +92,7 @@ private:
     };
 
     void on_request(const envdesign::design_request_t &request);
+    std::optional<std::string> busy(const std::string &client) const;
     void on_cancel(const envdesign::cancel_t &cancel);
     void on_spec_need(const envdesign::spec_need_t &need);
     void start_waiting();

@@ -42,7 +42,8 @@ private:
 };
 
 Planner::Planner(bus::Bus &bus, PlannerConfig config)
-    : bus_(bus), config_(std::move(config)), specs_(config_.work_dir, config_.max_specs),
+    : bus_(bus), config_(std::move(config)),
+      specs_(config_.work_dir, config_.max_specs, config_.spec_limits),
       memory_(static_cast<std::size_t>(std::max(0, config_.remembered_answers))) {
     subscriptions_.push_back(bus_.subscribe<envdesign::job_t>(
         bus::JOB, [this](const envdesign::job_t &job) { on_job(job); }));
@@ -73,6 +74,7 @@ void Planner::tick() {
         heartbeat(stopping_);
     drop_stale_parked(now);
     ask_for_specs(now);
+    specs_.expire();
 }
 
 void Planner::drop_stale_parked(Clock::time_point now) {

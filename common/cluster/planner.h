@@ -44,6 +44,7 @@ struct PlannerConfig {
     int max_specs = 4;
     int answers_kept = 4096;         // by job id, for re-sent jobs
     int remembered_answers = 16'384; // by content (answer_memory.h), each about a plan's size
+    SpecLimits spec_limits;          // what chunks from the bus may make it hold
 };
 
 struct PlannerStats {

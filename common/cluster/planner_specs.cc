@@ -5,19 +5,32 @@
 #include "envdesign/spec_t.hpp"
 #include "pddl/parse_error.h"
 
+#include <algorithm>
+
 namespace envdesign::cluster {
 
 PlannerSpecs::Added PlannerSpecs::add_chunk(const envdesign::spec_chunk_t &chunk,
                                             std::string &why) {
-    if (auto problem = chunk_problem(chunk)) {
+    if (auto problem = chunk_problem(chunk, limits_.max_spec_bytes)) {
         why = *problem;
         return Added::BAD;
     }
     std::lock_guard lock(mutex_);
-    Entry &entry = specs_[chunk.spec_hash];
-    entry.used = std::chrono::steady_clock::now();
-    if (!entry.bytes.empty())
+    auto now = Clock::now();
+    expire_locked(now);
+    auto it = specs_.find(chunk.spec_hash);
+    if (it != specs_.end() && !it->second.bytes.empty()) {
+        it->second.used = now;
         return Added::KNOWN;
+    }
+    bool is_new = it == specs_.end() || !it->second.assembling;
+    if (!make_room(chunk.spec_hash, static_cast<std::size_t>(chunk.num_bytes), is_new ? 1 : 0)) {
+        why = "specs being assembled would hold more than " +
+              std::to_string(limits_.max_incomplete_bytes) + " bytes";
+        return Added::BAD;
+    }
+    Entry &entry = specs_[chunk.spec_hash];
+    entry.used = now;
     if (!entry.assembling)
         entry.assembling.emplace(chunk);
     if (!entry.assembling->add(chunk)) {
@@ -77,6 +90,67 @@ std::shared_ptr<const LoadedSpec> PlannerSpecs::load(const std::string &hash) {
 int PlannerSpecs::size() const {
     std::lock_guard lock(mutex_);
     return static_cast<int>(specs_.size());
+}
+
+int PlannerSpecs::incomplete() const {
+    std::lock_guard lock(mutex_);
+    return static_cast<int>(std::count_if(specs_.begin(), specs_.end(), [](const auto &e) {
+        return e.second.assembling.has_value();
+    }));
+}
+
+std::size_t PlannerSpecs::incomplete_bytes() const {
+    std::lock_guard lock(mutex_);
+    return incomplete_bytes_locked();
+}
+
+void PlannerSpecs::expire() {
+    std::lock_guard lock(mutex_);
+    expire_locked(Clock::now());
+}
+
+void PlannerSpecs::expire_locked(Clock::time_point now) {
+    auto limit = std::chrono::duration_cast<Clock::duration>(
+        std::chrono::duration<double>(limits_.expire_s));
+    std::erase_if(
+        specs_, [&](const auto &e) { return e.second.assembling && now - e.second.used > limit; });
+}
+
+std::size_t PlannerSpecs::incomplete_bytes_locked() const {
+    std::size_t total = 0;
+    for (const auto &[hash, entry] : specs_)
+        if (entry.assembling)
+            total += entry.assembling->received_bytes();
+    return total;
+}
+
+std::map<std::string, PlannerSpecs::Entry>::iterator
+PlannerSpecs::oldest_incomplete(const std::string &keep) {
+    auto oldest = specs_.end();
+    for (auto it = specs_.begin(); it != specs_.end(); ++it)
+        if (it->second.assembling && it->first != keep &&
+            (oldest == specs_.end() || it->second.used < oldest->second.used))
+            oldest = it;
+    return oldest;
+}
+
+// Drops the oldest specs being assembled (never `keep`) until `entries` more of them and
+// `bytes` more bytes fit the limits; false if they cannot.
+bool PlannerSpecs::make_room(const std::string &keep, std::size_t bytes, int entries) {
+    auto fits = [&] {
+        int count = 0;
+        for (const auto &[hash, entry] : specs_)
+            count += entry.assembling ? 1 : 0;
+        return count + entries <= std::max(1, limits_.max_incomplete) &&
+               incomplete_bytes_locked() + bytes <= limits_.max_incomplete_bytes;
+    };
+    while (!fits()) {
+        auto oldest = oldest_incomplete(keep);
+        if (oldest == specs_.end())
+            return false;
+        specs_.erase(oldest);
+    }
+    return true;
 }
 
 std::shared_ptr<const LoadedSpec> PlannerSpecs::load_now(const std::string &hash,

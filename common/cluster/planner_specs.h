@@ -3,7 +3,8 @@
 // (every planner keeps every spec it hears, so one that joins later rarely has to ask), the
 // assembled encoding is checked against its hash, and a spec is loaded (spec_loader.h) the
 // first time a job needs it. At most `max_specs` specs are kept, the least recently used
-// going first. Thread-safe: chunks come from the bus thread, loads from worker threads.
+// going first. Specs being assembled are bounded too (SpecLimits): anyone on the bus can send
+// chunks. Thread-safe: chunks come from the bus thread, loads from worker threads.
 
 #include "cluster/spec_chunks.h"
 #include "design/design_problem.h"
@@ -24,12 +25,21 @@ struct LoadedSpec {
     std::string error;                            // why not
 };
 
+struct SpecLimits {
+    std::size_t max_spec_bytes = DEFAULT_MAX_SPEC_BYTES; // one spec's encoding
+    // Specs being assembled: at most this many (a new one pushes out the oldest) holding at
+    // most this many bytes together, each dropped when no chunk came for expire_s.
+    int max_incomplete = 8;
+    std::size_t max_incomplete_bytes = 4 * DEFAULT_MAX_SPEC_BYTES;
+    double expire_s = 60;
+};
+
 class PlannerSpecs {
 public:
     enum class Added { INCOMPLETE, COMPLETED, KNOWN, BAD };
 
-    PlannerSpecs(std::string work_dir, int max_specs)
-        : work_dir_(std::move(work_dir)), max_specs_(std::max(1, max_specs)) {}
+    PlannerSpecs(std::string work_dir, int max_specs, SpecLimits limits = {})
+        : work_dir_(std::move(work_dir)), max_specs_(std::max(1, max_specs)), limits_(limits) {}
 
     // `why` says what is wrong when BAD.
     Added add_chunk(const envdesign::spec_chunk_t &chunk, std::string &why);
@@ -40,20 +50,33 @@ public:
     // spec is not complete here.
     std::shared_ptr<const LoadedSpec> load(const std::string &hash);
     int size() const;
+    // Specs being assembled, and the bytes they hold.
+    int incomplete() const;
+    std::size_t incomplete_bytes() const;
+    // Drops specs being assembled that heard no chunk for limits.expire_s (also done on every
+    // chunk); the bus thread calls it now and then.
+    void expire();
 
 private:
+    using Clock = std::chrono::steady_clock;
     struct Entry {
         std::optional<SpecAssembler> assembling;
         std::string bytes; // complete and checked
         std::shared_future<std::shared_ptr<const LoadedSpec>> loaded;
-        std::chrono::steady_clock::time_point used;
+        Clock::time_point used;
     };
 
     std::shared_ptr<const LoadedSpec> load_now(const std::string &hash, const std::string &bytes);
     void evict(const std::string &keep);
+    // Under the lock.
+    void expire_locked(Clock::time_point now);
+    bool make_room(const std::string &keep, std::size_t bytes, int entries);
+    std::map<std::string, Entry>::iterator oldest_incomplete(const std::string &keep);
+    std::size_t incomplete_bytes_locked() const;
 
     std::string work_dir_;
     int max_specs_;
+    SpecLimits limits_;
     mutable std::mutex mutex_;
     std::map<std::string, Entry> specs_;
 };

@@ -45,9 +45,13 @@ std::vector<envdesign::spec_chunk_t> split_spec(const std::string &bytes, const 
     return chunks;
 }
 
-std::optional<std::string> chunk_problem(const envdesign::spec_chunk_t &c) {
+std::optional<std::string> chunk_problem(const envdesign::spec_chunk_t &c,
+                                         std::size_t max_spec_bytes) {
     if (c.spec_hash.size() != 64)
         return "the spec hash is not 64 hex digits";
+    if (c.total_bytes > 0 && static_cast<std::size_t>(c.total_bytes) > max_spec_bytes)
+        return "the spec claims " + std::to_string(c.total_bytes) + " bytes, more than the " +
+               std::to_string(max_spec_bytes) + " taken";
     if (c.total_bytes <= 0 || c.num_chunks <= 0 ||
         c.num_chunks != (c.total_bytes + CHUNK_BYTES - 1) / CHUNK_BYTES)
         return "the chunk count does not match the size";
@@ -60,26 +64,34 @@ std::optional<std::string> chunk_problem(const envdesign::spec_chunk_t &c) {
 }
 
 SpecAssembler::SpecAssembler(const envdesign::spec_chunk_t &first)
-    : bytes_(static_cast<std::size_t>(first.total_bytes), '\0'),
-      have_(static_cast<std::size_t>(first.num_chunks), false), missing_count_(first.num_chunks) {}
+    : total_bytes_(first.total_bytes), chunks_(static_cast<std::size_t>(first.num_chunks)),
+      missing_count_(first.num_chunks) {}
 
 bool SpecAssembler::add(const envdesign::spec_chunk_t &c) {
-    if (chunk_problem(c) || c.total_bytes != static_cast<std::int32_t>(bytes_.size()) ||
-        c.num_chunks != static_cast<std::int16_t>(have_.size()))
+    if (chunk_problem(c, static_cast<std::size_t>(total_bytes_)) || c.total_bytes != total_bytes_ ||
+        c.num_chunks != static_cast<std::int16_t>(chunks_.size()))
         return false;
-    if (!have_[c.chunk_index]) {
-        std::copy(c.data.begin(), c.data.end(),
-                  bytes_.begin() + static_cast<std::ptrdiff_t>(c.chunk_index) * CHUNK_BYTES);
-        have_[c.chunk_index] = true;
+    std::string &slot = chunks_[static_cast<std::size_t>(c.chunk_index)];
+    if (slot.empty()) {
+        slot.assign(c.data.begin(), c.data.end());
+        received_bytes_ += slot.size();
         --missing_count_;
     }
     return true;
 }
 
+std::string SpecAssembler::bytes() const {
+    std::string out;
+    out.reserve(received_bytes_);
+    for (const auto &chunk : chunks_)
+        out += chunk;
+    return out;
+}
+
 std::vector<int> SpecAssembler::missing() const {
     std::vector<int> out;
-    for (std::size_t i = 0; i < have_.size(); ++i)
-        if (!have_[i])
+    for (std::size_t i = 0; i < chunks_.size(); ++i)
+        if (chunks_[i].empty())
             out.push_back(static_cast<int>(i));
     return out;
 }

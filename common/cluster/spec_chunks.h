@@ -21,6 +21,9 @@
 namespace envdesign::cluster {
 
 inline constexpr int CHUNK_BYTES = 32000;
+// The largest spec encoding (spec text and inlined PDDL files) a service takes by default:
+// far above real design problems (the paper's are under 100 KB), far below what hurts.
+inline constexpr std::size_t DEFAULT_MAX_SPEC_BYTES = 16u << 20;
 
 // SHA-256 of `bytes`, lower-case hex.
 std::string content_hash(const std::string &bytes);
@@ -30,10 +33,13 @@ std::vector<envdesign::spec_chunk_t> split_spec(const std::string &bytes, const 
                                                 std::int64_t request_id, const std::string &sender,
                                                 const std::vector<int> &indices = {});
 
-// Why `chunk` cannot be part of a spec (sizes inconsistent), or nullopt when it is fine.
-std::optional<std::string> chunk_problem(const envdesign::spec_chunk_t &chunk);
+// Why `chunk` cannot be part of a spec (sizes inconsistent, or the spec it claims to be part
+// of larger than `max_spec_bytes`), or nullopt when it is fine.
+std::optional<std::string> chunk_problem(const envdesign::spec_chunk_t &chunk,
+                                         std::size_t max_spec_bytes = DEFAULT_MAX_SPEC_BYTES);
 
-// Collects the chunks of one spec.
+// Collects the chunks of one spec. Holds only what has arrived: the size a chunk claims is
+// not allocated up front (two forged chunks claiming 1 GB each once took a planner to 2 GB).
 class SpecAssembler {
 public:
     // `first` must have passed chunk_problem.
@@ -43,13 +49,16 @@ public:
     bool add(const envdesign::spec_chunk_t &chunk);
     bool complete() const { return missing_count_ == 0; }
     std::vector<int> missing() const;
+    // Bytes held so far.
+    std::size_t received_bytes() const { return received_bytes_; }
     // The whole encoding once complete; its hash still needs checking.
-    const std::string &bytes() const { return bytes_; }
+    std::string bytes() const;
 
 private:
-    std::string bytes_;
-    std::vector<bool> have_;
+    std::int32_t total_bytes_;
+    std::vector<std::string> chunks_; // empty: not arrived (every chunk has at least 1 byte)
     int missing_count_;
+    std::size_t received_bytes_ = 0;
 };
 
 } // namespace envdesign::cluster

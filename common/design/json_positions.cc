@@ -1,6 +1,9 @@
 #include "design/json_positions.h"
 
 #include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 
 namespace envdesign::design {
 namespace {
@@ -108,7 +111,84 @@ private:
     int column_ = 1;
 };
 
+// Tracks line and column (UTF-8 characters) over a linear walk, as PositionScanner does.
+class LimitScanner {
+public:
+    LimitScanner(const std::string &text, const std::string &file) : text_(text), file_(file) {}
+
+    void scan() {
+        int depth = 0;
+        while (pos_ < text_.size()) {
+            char c = text_[pos_];
+            if (c == '"') {
+                skip_string();
+            } else if (c == '[' || c == '{') {
+                if (++depth > MAX_JSON_DEPTH)
+                    throw pddl::ParseError(here(), "arrays and objects nested more than " +
+                                                       std::to_string(MAX_JSON_DEPTH) + " deep");
+                advance();
+            } else if (c == ']' || c == '}') {
+                --depth;
+                advance();
+            } else if (c == '-' || std::isdigit(static_cast<unsigned char>(c))) {
+                number();
+            } else {
+                advance();
+            }
+        }
+    }
+
+private:
+    pddl::Location here() const { return {file_, line_, column_}; }
+
+    void advance() {
+        if (text_[pos_] == '\n') {
+            ++line_;
+            column_ = 1;
+        } else if ((static_cast<unsigned char>(text_[pos_]) & 0xC0) != 0x80) {
+            ++column_;
+        }
+        ++pos_;
+    }
+
+    void skip_string() {
+        advance(); // '"'
+        while (pos_ < text_.size() && text_[pos_] != '"') {
+            if (text_[pos_] == '\\' && pos_ + 1 < text_.size())
+                advance();
+            advance();
+        }
+        if (pos_ < text_.size())
+            advance();
+    }
+
+    void number() {
+        pddl::Location start = here();
+        std::string token;
+        while (pos_ < text_.size() &&
+               std::string_view("+-.0123456789eE").find(text_[pos_]) != std::string::npos) {
+            token += text_[pos_];
+            advance();
+        }
+        errno = 0;
+        double value = std::strtod(token.c_str(), nullptr);
+        if (std::isinf(value) || (errno == ERANGE && std::abs(value) > 1))
+            throw pddl::ParseError(start, "the number " + token.substr(0, 40) +
+                                              " is beyond the range of a double");
+    }
+
+    const std::string &text_;
+    std::string file_;
+    std::size_t pos_ = 0;
+    int line_ = 1;
+    int column_ = 1;
+};
+
 } // namespace
+
+void check_json_limits(const std::string &text, const std::string &file) {
+    LimitScanner(text, file).scan();
+}
 
 std::string snake_case(const std::string &name) {
     std::string out;

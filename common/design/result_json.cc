@@ -44,6 +44,10 @@ nlohmann::json tasks_json(const DesignProblem &problem, const EvaluatedDesign &d
 
 } // namespace
 
+std::string json_text(const nlohmann::json &value) {
+    return value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 nlohmann::json json_number(std::optional<double> value) {
     if (!value)
         return nullptr;

@@ -9,6 +9,10 @@
 
 namespace envdesign::design {
 
+// `value` as one line of text. Names come from input files byte for byte; bytes that are not
+// UTF-8 become U+FFFD here instead of making nlohmann's dump() throw after the work is done.
+std::string json_text(const nlohmann::json &value);
+
 // A finite number, "inf", or null when unset.
 nlohmann::json json_number(std::optional<double> value);
 

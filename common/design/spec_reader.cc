@@ -1,13 +1,13 @@
 #include "design/spec_reader.h"
 
 #include "design/json_positions.h"
+#include "pddl/input_file.h"
 
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
 #include <google/protobuf/util/json_util.h>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -133,6 +133,7 @@ pddl::Location location_of_byte(const std::string &text, std::size_t byte,
 }
 
 SpecFile read_json(const std::string &text, const std::string &path) {
+    check_json_limits(text, path); // first: the readers below recurse or throw without a line
     try {
         auto parsed = nlohmann::json::parse(text); // only for the position of a syntax error
         (void)parsed;
@@ -142,6 +143,8 @@ SpecFile read_json(const std::string &text, const std::string &path) {
         throw pddl::ParseError(
             location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
             "malformed JSON: " + (reason == std::string::npos ? message : message.substr(reason)));
+    } catch (const nlohmann::json::exception &e) { // anything check_json_limits missed
+        throw pddl::ParseError({path, 1, 1}, std::string("malformed JSON: ") + e.what());
     }
     auto locations = std::make_unique<JsonLocations>(path, index_json_positions(text, path));
     SpecFile spec{path, {}, nullptr};
@@ -181,12 +184,7 @@ SpecFile read_spec_text(const std::string &text, const std::string &path) {
 }
 
 SpecFile read_spec_file(const std::string &path) {
-    std::ifstream in(path);
-    if (!in)
-        throw pddl::ParseError({path, 0, 0}, "cannot open file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return read_spec_text(buffer.str(), path);
+    return read_spec_text(pddl::read_input_file(path), path);
 }
 
 } // namespace envdesign::design

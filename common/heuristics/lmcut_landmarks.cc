@@ -129,7 +129,10 @@ void LmCutLandmarks::first_exploration_incremental() {
             enqueue_if_necessary(effect, target);
     }
     while (!queue_.empty()) {
-        auto [cost, prop] = queue_.pop();
+        // Plain variables, not a structured binding: clang 14 cannot capture those in a lambda.
+        auto popped = queue_.pop();
+        int cost = popped.first;
+        auto prop = popped.second;
         if (cost > prop_cost_[prop])
             continue;
         for_each_supported(prop, [&](int op) {

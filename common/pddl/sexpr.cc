@@ -1,7 +1,8 @@
 #include "pddl/sexpr.h"
 
+#include "pddl/input_file.h"
+
 #include <cctype>
-#include <fstream>
 #include <sstream>
 
 namespace envdesign::pddl {
@@ -118,13 +119,6 @@ SExpr read_sexpr(const std::string &text, const std::string &file) {
     return Reader(text, file).read_top();
 }
 
-SExpr read_sexpr_file(const std::string &path) {
-    std::ifstream in(path);
-    if (!in)
-        throw ParseError({path, 0, 0}, "cannot open file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return read_sexpr(buffer.str(), path);
-}
+SExpr read_sexpr_file(const std::string &path) { return read_sexpr(read_input_file(path), path); }
 
 } // namespace envdesign::pddl

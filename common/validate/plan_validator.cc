@@ -1,10 +1,11 @@
 #include "validate/plan_validator.h"
 
+#include "pddl/input_file.h"
 #include "pddl/sexpr.h"
 
-#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace envdesign::validate {
 namespace {
@@ -128,7 +129,7 @@ private:
     long long cost_ = 0;
 };
 
-}  // namespace
+} // namespace
 
 Validation validate_plan(const pddl::Domain &domain, const pddl::Problem &problem,
                          const std::vector<std::string> &plan) {
@@ -154,9 +155,7 @@ Validation validate_plan(const pddl::Domain &domain, const pddl::Problem &proble
 }
 
 std::vector<std::string> read_plan_file(const std::string &path) {
-    std::ifstream in(path);
-    if (!in)
-        throw pddl::ParseError({path, 0, 0}, "cannot open plan file");
+    std::istringstream in(pddl::read_input_file(path));
     std::vector<std::string> plan;
     std::string line;
     for (int number = 1; std::getline(in, line); ++number) {
@@ -173,4 +172,4 @@ std::vector<std::string> read_plan_file(const std::string &path) {
     return plan;
 }
 
-}  // namespace envdesign::validate
+} // namespace envdesign::validate

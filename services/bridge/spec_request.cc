@@ -1,13 +1,13 @@
 #include "spec_request.h"
 
 #include "design/spec_reader.h"
+#include "pddl/input_file.h"
 #include "pddl/parse_error.h"
 
 #include <google/protobuf/text_format.h>
 #include <google/protobuf/util/json_util.h>
 
 #include <filesystem>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -26,12 +26,11 @@ envdesign::spec_file_t file_message(const std::string &path, const std::string &
 bool is_json(const std::string &name) { return name.size() >= 5 && name.ends_with(".json"); }
 
 std::string read_file(const fs::path &path, const pddl::Location &where) {
-    std::ifstream in(path);
-    if (!in)
-        throw pddl::ParseError(where, "cannot read '" + path.string() + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    try {
+        return pddl::read_input_file(path.string());
+    } catch (const pddl::ParseError &e) {
+        throw pddl::ParseError(where, "cannot read '" + path.string() + "': " + e.message());
+    }
 }
 
 std::string print(const proto::DesignProblem &message, const std::string &name) {

@@ -14,6 +14,18 @@ int main(int argc, char **argv) {
     app.add_option("--max-requests", config.max_active, "requests searched at once")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    app.add_option("--max-waiting", config.max_waiting,
+                   "requests waiting for a search slot; beyond that new ones are answered busy")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    app.add_option("--max-per-client", config.max_per_client,
+                   "requests searching or waiting per client; beyond that busy")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    app.add_option("--max-spec-bytes", config.max_spec_bytes,
+                   "largest spec (text and files) a request may carry")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30))
+        ->capture_default_str();
     app.add_option("--planner-timeout", config.pool.planner_timeout_s,
                    "seconds of silence after which a planner is gone")
         ->check(CLI::PositiveNumber)

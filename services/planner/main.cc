@@ -24,6 +24,10 @@ int main(int argc, char **argv) {
                    "answers remembered by content, for any coordinator's jobs (0: none)")
         ->check(CLI::Range(0, 10'000'000))
         ->capture_default_str();
+    app.add_option("--max-spec-bytes", config.spec_limits.max_spec_bytes,
+                   "largest spec encoding taken from the bus (chunks of larger ones are dropped)")
+        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30))
+        ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))

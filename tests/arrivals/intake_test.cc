@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace envdesign::arrivals {
@@ -164,6 +165,21 @@ TEST(LogThrottle, OverdueSummaries) {
     EXPECT_EQ(due[0].first, Verdict::RATE_LIMITED);
     EXPECT_EQ(due[0].second, 7);
     EXPECT_TRUE(throttle.overdue(30).empty());
+}
+
+// Sequence numbers near INT64_MAX (issue 10): the counters of skipped and unseen numbers
+// saturate instead of overflowing into negative values that the bridge would publish.
+TEST(Intake, SequenceNumbersNearInt64MaxDoNotOverflow) {
+    ArrivalIntake intake({});
+    constexpr int64_t MAX = std::numeric_limits<int64_t>::max();
+    EXPECT_EQ(intake.check(arrival("a", MAX, "s1"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_EQ(intake.check(arrival("a", MAX, "s2"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_EQ(intake.check(arrival("a", 1, "s3"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_EQ(intake.check(arrival("a", MAX, "s3"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_EQ(intake.check(arrival("a", 1, "s4"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_EQ(intake.check(arrival("a", MAX, "s4"), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_EQ(intake.counters().sequence_unseen, MAX);
+    EXPECT_EQ(intake.counters().sequence_gaps, MAX);
 }
 
 } // namespace

@@ -68,15 +68,19 @@ inline envdesign::design_request_t request_of(const std::string &spec_path, std:
 class MemqCluster {
 public:
     // `planners` planner cores with `workers` each; `setup` may add more on the bus (before
-    // the loop starts) and returns a tick for them.
+    // the loop starts) and returns a tick for them; `configure` changes the coordinator's
+    // configuration.
     MemqCluster(int planners, int workers = 1,
-                std::function<std::function<void()>(bus::Bus &)> setup = {})
+                std::function<std::function<void()>(bus::Bus &)> setup = {},
+                std::function<void(CoordinatorConfig &)> configure = {})
         : bus_("memq://", quiet_logger()) {
         CoordinatorConfig c;
         c.instance = "coordinator";
         c.work_dir = std::filesystem::temp_directory_path().string();
         c.pool.planner_timeout_s = 0.5;
         c.pool.lost_after_s = 0.15;
+        if (configure)
+            configure(c);
         coordinator_ = std::make_unique<Coordinator>(bus_, c);
         for (int i = 0; i < planners; ++i) {
             PlannerConfig p;
@@ -110,6 +114,12 @@ public:
                                        double timeout_s = 60) {
         bus_.publish(bus::REQUEST, r);
         return wait(r.request_id, timeout_s);
+    }
+
+    // Whether a result for `id` came.
+    bool answered(std::int64_t id) {
+        std::lock_guard lock(mutex_);
+        return got_.count(id) > 0;
     }
 
     envdesign::design_result_t wait(std::int64_t id, double timeout_s = 60) {

@@ -82,6 +82,7 @@ public:
         return *status_;
     }
     bool running() { return !wait(std::chrono::milliseconds(0)); }
+    pid_t pid() const { return pid_; }
     void signal(int s) const { ::kill(pid_, s); }
 
     // SIGTERM, then SIGKILL after 5 s; the exit code.

@@ -95,7 +95,9 @@ std::string result_json(const envdesign::design_result_t &r) {
     out["notes"] = r.notes;
     if (!r.change.empty()) // a re-evaluation: what changed and why
         out["change"] = r.change;
-    return out.dump();
+    // Names are bytes from the client's files: not UTF-8 ones become U+FFFD, as in the engine's
+    // JSON (design/result_json.h), instead of making dump() throw.
+    return out.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 std::string result_text(const envdesign::design_result_t &r) {

@@ -1,12 +1,13 @@
 #include "spec_bundle.h"
 
+#include "pddl/input_file.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <set>
-#include <sstream>
 
 namespace envdesign::client {
 namespace {
@@ -153,14 +154,15 @@ std::vector<NamedPath> json_paths(const std::string &text) {
     return found;
 }
 
-bool read_file(const fs::path &path, std::string &content) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return false;
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    content = buffer.str();
-    return true;
+// The bounded reader the engine uses (no FIFO, device or oversized file); nullopt with
+// `why` set when it refuses.
+std::optional<std::string> read_file(const fs::path &path, std::string &why) {
+    try {
+        return pddl::read_input_file(path.string());
+    } catch (const pddl::ParseError &e) {
+        why = e.message();
+        return std::nullopt;
+    }
 }
 
 bool ends_with(const std::string &s, const std::string &suffix) {
@@ -177,8 +179,11 @@ std::vector<NamedPath> named_paths(const std::string &text, bool json) {
 envdesign::spec_t bundle_spec(const std::string &spec_path) {
     envdesign::spec_t spec;
     spec.name = spec_path;
-    if (!read_file(spec_path, spec.text))
-        throw SpecError(spec_path + ":0:0: error: cannot open file");
+    std::string why;
+    auto text = read_file(spec_path, why);
+    if (!text)
+        throw SpecError(spec_path + ":0:0: error: " + why);
+    spec.text = std::move(*text);
     std::set<std::string> seen;
     for (const NamedPath &named : named_paths(spec.text, ends_with(spec_path, ".json"))) {
         if (!seen.insert(named.path).second)
@@ -188,10 +193,12 @@ envdesign::spec_t bundle_spec(const std::string &spec_path) {
                             : fs::path(spec_path).parent_path() / named.path;
         envdesign::spec_file_t file;
         file.path = named.path;
-        if (!fs::is_regular_file(path) || !read_file(path, file.content))
+        auto content = read_file(path, why);
+        if (!content)
             throw SpecError(spec_path + ":" + std::to_string(named.line) + ":" +
                             std::to_string(named.column) + ": error: cannot open '" + named.path +
-                            "' (" + named.field + ", looked for " + path.string() + ")");
+                            "' (" + named.field + ", looked for " + path.string() + "): " + why);
+        file.content = std::move(*content);
         spec.files.push_back(std::move(file));
     }
     spec.num_files = static_cast<std::int16_t>(spec.files.size());

@@ -1,0 +1,166 @@
+// Writes the committed seed corpora (tests/fuzz/corpus/<target>/) from the repository's
+// examples: valid messages of every kind a handler takes, and valid input files, for libFuzzer
+// to mutate. Run once after a message type changes:
+//   build/bin/fuzz_make_seeds SOURCE_DIR
+
+#include "bus_records.h"
+
+#include "bus/codec.h"
+#include "cluster/spec_chunks.h"
+#include "envdesign/cancel_t.hpp"
+#include "envdesign/design_request_t.hpp"
+#include "envdesign/evaluation_t.hpp"
+#include "envdesign/job_t.hpp"
+#include "envdesign/planner_heartbeat_t.hpp"
+#include "envdesign/spec_need_t.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+
+namespace {
+
+using namespace envdesign;
+namespace fs = std::filesystem;
+
+std::string read(const fs::path &path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write(const fs::path &dir, const std::string &name, const std::string &bytes) {
+    fs::create_directories(dir);
+    std::ofstream(dir / name, std::ios::binary) << bytes;
+}
+
+envdesign::spec_t restaurant(const fs::path &source) {
+    fs::path dir = source / "examples/restaurant";
+    envdesign::spec_t spec;
+    spec.name = "a-one-task-t1.textproto";
+    spec.text = read(dir / spec.name);
+    for (const char *file : {"domain.pddl", "serve-g1.pddl", "serve-g1-human.pddl"})
+        spec.files.push_back({file, read(dir / file)});
+    spec.num_files = static_cast<std::int16_t>(spec.files.size());
+    return spec;
+}
+
+envdesign::design_request_t request(const envdesign::spec_t &spec, std::int64_t id) {
+    envdesign::design_request_t r{};
+    r.request_id = id;
+    r.sender = "client";
+    r.spec = spec;
+    r.time_limit_s = 1;
+    r.max_design_size = -1;
+    return r;
+}
+
+template <typename M> std::string record(int channel, const M &message) {
+    return fuzz::write_record(channel, bus::encode_message(message));
+}
+
+void coordinator_seeds(const fs::path &source, const fs::path &out) {
+    envdesign::spec_t spec = restaurant(source);
+    write(out, "request", record(0, request(spec, 1)));
+    envdesign::spec_t json = spec;
+    json.name = "spec.json";
+    json.text = read(source / "tests/data/design/restaurant-c.json");
+    write(out, "request-json", record(0, request(json, 2)));
+    envdesign::spec_t deep = spec;
+    deep.name = "deep.json";
+    deep.text = "{\"task\": " + std::string(150, '[') + std::string(150, ']') + "}";
+    write(out, "request-deep-json", record(0, request(deep, 3)));
+    envdesign::cancel_t cancel{0, 1, "client", "seed"};
+    write(out, "request-cancel", record(0, request(spec, 1)) + record(1, cancel));
+    envdesign::spec_need_t need{};
+    need.coordinator = "coordinator";
+    need.spec_hash = cluster::content_hash(bus::encode_message(spec));
+    need.sender = "planner";
+    write(out, "spec-need", record(2, need));
+    envdesign::planner_heartbeat_t beat{};
+    beat.sender = "planner";
+    beat.period_ms = 200;
+    beat.capacity = 1;
+    beat.jobs = {1, 2};
+    beat.num_jobs = 2;
+    envdesign::evaluation_t evaluation{};
+    evaluation.request_id = 1;
+    evaluation.sender = "planner";
+    evaluation.coordinator = "coordinator";
+    evaluation.job_id = 1;
+    evaluation.kind = 2;
+    evaluation.plan = {"(move c00 c01)"};
+    evaluation.plan_length = 1;
+    write(out, "heartbeat-evaluation",
+          record(0, request(spec, 1)) + record(4, beat) + record(3, evaluation));
+}
+
+void planner_seeds(const fs::path &source, const fs::path &out) {
+    std::string bytes = bus::encode_message(restaurant(source));
+    std::string hash = cluster::content_hash(bytes);
+    std::string chunks;
+    for (const auto &chunk : cluster::split_spec(bytes, hash, 1, "coordinator"))
+        chunks += record(1, chunk);
+    envdesign::job_t job{};
+    job.request_id = 1;
+    job.sender = "coordinator";
+    job.job_id = 1;
+    job.planner = "planner";
+    job.spec_hash = hash;
+    job.kind = envdesign::job_t::KIND_EXPLICABILITY;
+    job.modifications = {0};
+    job.num_modifications = 1;
+    job.time_limit_s = 1;
+    write(out, "spec-then-job", chunks + record(0, job));
+    job.kind = envdesign::job_t::KIND_ROBOT_BOUND;
+    write(out, "job-then-spec", record(0, job) + chunks);
+}
+
+void file_seeds(const fs::path &source, const fs::path &corpus) {
+    fs::path tiny = source / "tests/data/tiny";
+    write(corpus / "pddl", "tiny", read(tiny / "domain.pddl") + '\0' + read(tiny / "problem.pddl"));
+    fs::path restaurant = source / "examples/restaurant";
+    write(corpus / "pddl", "restaurant",
+          read(restaurant / "domain.pddl") + '\0' + read(restaurant / "serve-g1-human.pddl"));
+    for (const char *spec : {"a-one-task-t1.textproto", "c-two-tasks-t10.textproto"})
+        write(corpus / "spec_text", spec, read(restaurant / spec));
+    write(corpus / "spec_text", "blocksworld",
+          read(source / "examples/blocksworld" / "design.textproto"));
+    write(corpus / "spec_json", "restaurant-c.json",
+          read(source / "tests/data/design/restaurant-c.json"));
+    write(corpus / "spec_json", "unknown-object.json",
+          read(source / "tests/data/design/bad/unknown-object.json"));
+    // Arrivals: (1 config byte) then per arrival: 3 length-prefixed names, sequence, utime
+    // selector, clock step, known-problem byte.
+    auto arrival = [](const char *site, std::int64_t sequence) {
+        std::string a;
+        for (const char *name : {"p", site, "a"})
+            a += std::string(1, static_cast<char>(std::strlen(name))) + name;
+        a.append(reinterpret_cast<const char *>(&sequence), sizeof sequence);
+        return a + std::string("\1\1\1", 3);
+    };
+    write(corpus / "intake", "sequences",
+          "\1" + arrival("s1", 1) + arrival("s1", 2) + arrival("s1", 5) + arrival("s1", 1));
+    // Near INT64_MAX from two sites: the unseen-numbers counter once overflowed.
+    write(corpus / "intake", "sequences-near-max",
+          "\1" + arrival("s1", INT64_MAX) + arrival("s2", INT64_MAX) + arrival("s3", 1) +
+              arrival("s3", INT64_MAX));
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+    if (argc != 2) {
+        std::cerr << "usage: fuzz_make_seeds SOURCE_DIR\n";
+        return 2;
+    }
+    fs::path source = argv[1];
+    fs::path corpus = source / "tests/fuzz/corpus";
+    coordinator_seeds(source, corpus / "coordinator");
+    planner_seeds(source, corpus / "planner");
+    file_seeds(source, corpus);
+    std::cout << "seeds written under " << corpus << "\n";
+    return 0;
+}
