@@ -4,6 +4,7 @@
 #include "design_command.h"
 #include "explicable_command.h"
 #include "plan_command.h"
+#include "status_command.h"
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
@@ -22,7 +23,7 @@ void set_up_logging(const std::string &level) {
     spdlog::set_default_logger(logger);
 }
 
-}  // namespace
+} // namespace
 
 int main(int argc, char **argv) {
     CLI::App app{"envdesign: environment design for explicable robot behaviour"};
@@ -42,12 +43,18 @@ int main(int argc, char **argv) {
     envdesign::cli::add_validate_flags(*validate, validate_flags);
 
     envdesign::cli::ExplicableFlags explicable_flags;
-    auto *explicable = app.add_subcommand("explicable", "most explicable plan of a robot/human pair");
+    auto *explicable =
+        app.add_subcommand("explicable", "most explicable plan of a robot/human pair");
     envdesign::cli::add_explicable_flags(*explicable, explicable_flags);
 
     envdesign::cli::DesignFlags design_flags;
     auto *design = app.add_subcommand("design", "optimal environment design of a design problem");
     envdesign::cli::add_design_flags(*design, design_flags);
+
+    envdesign::cli::StatusFlags status_flags;
+    auto *status =
+        app.add_subcommand("status", "the services on a bus (coordinator, planners, bridges)");
+    envdesign::cli::add_status_flags(*status, status_flags);
 
     try {
         app.parse(argc, argv);
@@ -67,6 +74,8 @@ int main(int argc, char **argv) {
             return envdesign::cli::run_explicable(explicable_flags);
         if (*design)
             return envdesign::cli::run_design(design_flags);
+        if (*status)
+            return envdesign::cli::run_status(status_flags);
     } catch (const std::bad_alloc &) {
         spdlog::error("out of memory");
         return 4;
