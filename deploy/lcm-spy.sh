@@ -13,7 +13,7 @@
 #
 # --check SECONDS: no window for you. Runs lcm-spy under Xvfb for SECONDS on URL and checks
 # from its channel table that every ENVDESIGN_ channel heard was decoded, and that all of
-# $ENVDESIGN_SPY_CHANNELS (default: all nine) were heard. Exit 0 when so.
+# $ENVDESIGN_SPY_CHANNELS (default: all ten) were heard. Exit 0 when so.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -42,7 +42,7 @@ if [ -z "$check" ]; then
     exec java "${java_flags[@]}" -cp "$classpath" lcm.spy.Spy --lcm-url="$url"
 fi
 
-channels=${ENVDESIGN_SPY_CHANNELS:-ENVDESIGN_REQUEST ENVDESIGN_CANCEL ENVDESIGN_PROGRESS ENVDESIGN_RESULT ENVDESIGN_SPEC ENVDESIGN_JOB ENVDESIGN_SPEC_NEED ENVDESIGN_EVALUATION ENVDESIGN_HEARTBEAT}
+channels=${ENVDESIGN_SPY_CHANNELS:-ENVDESIGN_REQUEST ENVDESIGN_CANCEL ENVDESIGN_PROGRESS ENVDESIGN_RESULT ENVDESIGN_SPEC ENVDESIGN_JOB ENVDESIGN_SPEC_NEED ENVDESIGN_EVALUATION ENVDESIGN_HEARTBEAT ENVDESIGN_STATUS}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 javac -d "$work" -cp "$classpath" "$here/lcm-spy/LcmCheck.java"

@@ -4,6 +4,7 @@
 #include "design_command.h"
 #include "explicable_command.h"
 #include "plan_command.h"
+#include "status_command.h"
 #include "validate_command.h"
 
 #include <CLI/CLI.hpp>
@@ -64,6 +65,11 @@ int main(int argc, char **argv) {
     auto *design = app.add_subcommand("design", "optimal environment design of a design problem");
     envdesign::cli::add_design_flags(*design, design_flags);
 
+    envdesign::cli::StatusFlags status_flags;
+    auto *status =
+        app.add_subcommand("status", "the services on a bus (coordinator, planners, bridges)");
+    envdesign::cli::add_status_flags(*status, status_flags);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp &e) {
@@ -82,6 +88,8 @@ int main(int argc, char **argv) {
             return with_output_checked(envdesign::cli::run_explicable(explicable_flags));
         if (*design)
             return with_output_checked(envdesign::cli::run_design(design_flags));
+        if (*status)
+            return with_output_checked(envdesign::cli::run_status(status_flags));
     } catch (const std::bad_alloc &) {
         spdlog::error("out of memory");
         return 4;

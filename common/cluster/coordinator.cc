@@ -68,7 +68,8 @@ std::shared_ptr<store::RecordDb> open_evaluation_file(const CoordinatorConfig &c
 Coordinator::Coordinator(bus::Bus &bus, CoordinatorConfig config)
     : bus_(bus), config_(std::move(config)), router_(bus, config_.pool, config_.instance),
       specs_(config_.instance),
-      stores_(config_.stored_evaluations, open_evaluation_file(config_, bus.log())) {
+      stores_(config_.stored_evaluations, open_evaluation_file(config_, bus.log())),
+      status_(bus, "coordinator", config_.instance) {
     subscriptions_.push_back(bus_.subscribe<design_request_t>(
         bus::REQUEST, [this](const design_request_t &r) { on_request(r); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::cancel_t>(
@@ -201,6 +202,7 @@ int Coordinator::tick() {
         return wait_ms; // the loop calls after every message; housekeeping needs less
     last_tick_ = now;
     router_.tick();
+    status_.tick([this](envdesign::service_status_t &s) { fill_status(s); });
     for (auto &[name, open] : open_)
         if (open.started) // waiting ones are told when their client repeats them
             publish_progress(open, now, false);
@@ -274,6 +276,16 @@ void Coordinator::publish_progress(Open &open, Clock::time_point now, bool force
     bus_.publish(bus::PROGRESS, p);
     open.last_progress = now;
     open.last_sent = p;
+}
+
+void Coordinator::fill_status(envdesign::service_status_t &status) const {
+    status.requests_waiting = static_cast<std::int32_t>(waiting_.size());
+    status.requests_open = static_cast<std::int32_t>(open_.size()) - status.requests_waiting;
+    status.planners = router_.pool().live_planners();
+    status.jobs_in_flight = router_.pool().jobs_in_flight();
+    status.stored_evaluations = static_cast<std::int64_t>(stores_.records());
+    std::lock_guard lock(stats_mutex_);
+    status.jobs_done = stats_.results;
 }
 
 void Coordinator::publish_result(envdesign::design_result_t result) {

@@ -15,10 +15,13 @@
 //   int wait = 0;
 //   while (running) { bus.handle(wait ms); wait = coordinator.tick(); }
 //
+// Its status (bus/status.h) goes out once a second, idle or not: requests open and waiting,
+// live planners, jobs in flight, evaluations stored, drops.
 // Handlers and tick() run on the bus thread. Messages that make no sense (bad sizes, unknown
 // enums, a request without a client name) are counted in bus.malformed() and logged.
 
 #include "bus/bus.h"
+#include "bus/status.h"
 #include "cluster/job_router.h"
 #include "cluster/request_run.h"
 #include "cluster/spec_chunks.h"
@@ -101,6 +104,7 @@ private:
                      envdesign::design_result_t &result);
     void publish_progress(Open &open, Clock::time_point now, bool force);
     void publish_result(envdesign::design_result_t result);
+    void fill_status(envdesign::service_status_t &status) const;
 
     bus::Bus &bus_;
     CoordinatorConfig config_;
@@ -115,6 +119,7 @@ private:
     std::map<std::string, std::vector<std::string>> last_designs_;
     mutable std::mutex stats_mutex_;
     CoordinatorStats stats_;
+    bus::StatusPublisher status_;
     std::vector<bus::Subscription> subscriptions_; // last: handlers stop before the rest goes
 };
 

@@ -43,4 +43,14 @@ std::size_t EvaluationStores::stores() const {
     return stores_.size();
 }
 
+std::size_t EvaluationStores::records() const {
+    if (db_)
+        return db_->records();
+    std::lock_guard lock(mutex_);
+    std::size_t total = 0;
+    for (const auto &[key, entry] : stores_)
+        total += entry.first->records();
+    return total;
+}
+
 } // namespace envdesign::cluster

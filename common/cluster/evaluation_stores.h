@@ -37,6 +37,8 @@ public:
     // max_records.
     void trim();
     std::size_t stores() const;
+    // Evaluations and bounds kept: the file's records with a RecordDb, else those in memory.
+    std::size_t records() const;
     const std::shared_ptr<store::RecordDb> &db() const { return db_; }
 
 private:

@@ -44,7 +44,8 @@ private:
 Planner::Planner(bus::Bus &bus, PlannerConfig config)
     : bus_(bus), config_(std::move(config)),
       specs_(config_.work_dir, config_.max_specs, config_.spec_limits),
-      memory_(static_cast<std::size_t>(std::max(0, config_.remembered_answers))) {
+      memory_(static_cast<std::size_t>(std::max(0, config_.remembered_answers))),
+      status_(bus, "planner", config_.instance) {
     subscriptions_.push_back(bus_.subscribe<envdesign::job_t>(
         bus::JOB, [this](const envdesign::job_t &job) { on_job(job); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::spec_chunk_t>(
@@ -72,6 +73,7 @@ void Planner::tick() {
     last_tick_ = now;
     if (std::chrono::duration<double>(now - last_beat_).count() >= config_.heartbeat_period_s)
         heartbeat(stopping_);
+    status_.tick([this](envdesign::service_status_t &s) { fill_status(s); });
     drop_stale_parked(now);
     ask_for_specs(now);
     specs_.expire();
@@ -118,6 +120,13 @@ void Planner::stop() {
     stopping_ = true;
     heartbeat(true);
     bus_.log().info("request - | stopping: no more jobs");
+}
+
+void Planner::fill_status(envdesign::service_status_t &status) const {
+    std::lock_guard lock(mutex_);
+    status.jobs_in_flight = static_cast<std::int32_t>(held_.size());
+    status.jobs_done = stats_.jobs_done;
+    status.stored_evaluations = static_cast<std::int64_t>(memory_.size());
 }
 
 PlannerStats Planner::stats() const {

@@ -1,7 +1,8 @@
 #pragma once
 // The planner service's core (services/planner): does the jobs addressed to it on
 // ENVDESIGN_JOB with `workers` threads and answers on ENVDESIGN_EVALUATION; announces
-// itself, its capacity and the jobs it holds on ENVDESIGN_HEARTBEAT. Stateless as far as
+// itself, its capacity and the jobs it holds on ENVDESIGN_HEARTBEAT, and its status (jobs
+// held and done, answers remembered, drops) on ENVDESIGN_STATUS once a second. Stateless as far as
 // the system is concerned: any planner can do any job, and one may start or stop at any
 // time; what it keeps (specs, its plan caches, recent answers) only saves work.
 //
@@ -21,6 +22,7 @@
 //   planner.stop();   // a last heartbeat says it is going; running jobs finish
 
 #include "bus/bus.h"
+#include "bus/status.h"
 #include "cluster/answer_memory.h"
 #include "cluster/planner_specs.h"
 #include "envdesign/evaluation_t.hpp"
@@ -76,6 +78,7 @@ private:
     void ask_for_specs(Clock::time_point now);
     void drop_stale_parked(Clock::time_point now);
     void heartbeat(bool stopping);
+    void fill_status(envdesign::service_status_t &status) const;
     void work();
     envdesign::evaluation_t evaluate(const Pending &pending, class WorkerCaches &caches);
     // Bookkeeping after `job`'s answer was published; returns the answers of the jobs that
@@ -106,6 +109,7 @@ private:
     std::atomic<bool> stopping_{false};
     Clock::time_point last_beat_{};
     Clock::time_point last_tick_{};
+    bus::StatusPublisher status_;
     std::vector<std::thread> workers_;
     std::vector<bus::Subscription> subscriptions_;
 };

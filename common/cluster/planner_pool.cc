@@ -190,6 +190,11 @@ int PlannerPool::jobs_in_flight(std::uint64_t owner) const {
                                           [&](const auto &j) { return j.second.owner == owner; }));
 }
 
+int PlannerPool::jobs_in_flight() const {
+    std::lock_guard lock(mutex_);
+    return static_cast<int>(jobs_.size());
+}
+
 void PlannerPool::forget_owner(std::uint64_t owner) {
     std::vector<std::int64_t> ids;
     {

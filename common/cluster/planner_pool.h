@@ -100,6 +100,7 @@ public:
     bool demoted(const std::string &planner) const;
     double deadline_s() const; // what a job sent now has
     int jobs_in_flight(std::uint64_t owner) const;
+    int jobs_in_flight() const; // of every owner
     PoolCounters counters() const;
     // The counters of `owner`'s jobs alone (planners joined and lost stay 0).
     PoolCounters counters(std::uint64_t owner) const;

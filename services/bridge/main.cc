@@ -3,6 +3,7 @@
 
 #include "bridge.h"
 
+#include "bus/status.h"
 #include "pddl/parse_error.h"
 #include "service_main.h"
 #include "store/state_dir.h"
@@ -94,6 +95,18 @@ void finish_config(const Flags &f, bridge::BridgeConfig &c) {
     c.coordinator.time_limit_s = c.local.time_limit_s;
 }
 
+// The bridge's part of its status: re-evaluations awaited, and every arrival its intake
+// rejected, by verdict.
+void fill_status(const bridge::BridgeStats &stats, envdesign::service_status_t &status) {
+    status.requests_open = static_cast<std::int32_t>(stats.requests - stats.answers);
+    for (int v = 0; v < arrivals::VERDICTS; ++v) {
+        auto verdict = static_cast<arrivals::Verdict>(v);
+        if (verdict != arrivals::Verdict::ACCEPTED && stats.intake.count(verdict) > 0)
+            bus::add_drop(status, "dds:arrivals", arrivals::to_string(verdict),
+                          stats.intake.count(verdict));
+    }
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -116,7 +129,12 @@ int main(int argc, char **argv) {
         }
         try {
             bridge::Bridge bridge(*service.bus, config);
-            return services::run_until_signal(service, [&] { bridge.tick(); });
+            bus::StatusPublisher status(*service.bus, "bridge", service.instance);
+            return services::run_until_signal(service, [&] {
+                bridge.tick();
+                status.tick(
+                    [&](envdesign::service_status_t &s) { fill_status(bridge.stats(), s); });
+            });
         } catch (const pddl::ParseError &e) { // a --problem spec that does not load
             std::cerr << e.what() << std::endl;
             return 2;

@@ -4,7 +4,7 @@
 # carries authentication trailers (common/bus/auth.h) that LCM's Java decoders must skip.
 #   1. deploy/cluster.sh starts a coordinator and 2 planners; lcm-logger records a design
 #      run and one sample of every message type;
-#   2. lcm-spy (deploy/lcm-spy.sh --check, under Xvfb) decodes all nine ENVDESIGN_ channels;
+#   2. lcm-spy (deploy/lcm-spy.sh --check, under Xvfb) decodes all ten ENVDESIGN_ channels (the services send their status themselves);
 #   3. every ENVDESIGN_ event of the log decodes with the types jar (lcm-spy's type database);
 #   4. lcm-logplayer replays the log onto another port, where a second lcm-logger records
 #      exactly the same messages, channel by channel.
@@ -69,7 +69,7 @@ wait "$logger" || true
 
 echo "== 3. the log decodes"
 check_log "$work/run.lcmlog" | tee "$work/recorded.txt"
-for channel in REQUEST CANCEL PROGRESS RESULT SPEC JOB SPEC_NEED EVALUATION HEARTBEAT; do
+for channel in REQUEST CANCEL PROGRESS RESULT SPEC JOB SPEC_NEED EVALUATION HEARTBEAT STATUS; do
     grep -q "^ENVDESIGN_$channel " "$work/recorded.txt" || { echo "ENVDESIGN_$channel not recorded"; exit 1; }
 done
 

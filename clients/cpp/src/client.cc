@@ -4,14 +4,14 @@
 #include "bus/channels.h"
 #include "bus/lcm_url.h"
 #include "bus/log.h"
+#include "bus/status.h"
+#include "client_bus.h"
 #include "envdesign/cancel_t.hpp"
 #include "envdesign/design_progress_t.hpp"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "result_format.h"
 #include "spec_bundle.h"
-
-#include <spdlog/sinks/stdout_color_sinks.h>
 
 #include <cstdio>
 #include <optional>
@@ -83,7 +83,7 @@ Progress progress_of(const envdesign::design_progress_t &p) {
 class RemoteRun {
 public:
     RemoteRun(bus::Bus &bus, design_request_t request, const Options &options)
-        : bus_(bus), request_(std::move(request)), options_(options) {}
+        : bus_(bus), request_(std::move(request)), options_(options), board_(bus) {}
 
     Result run() {
         auto progress = bus_.subscribe<envdesign::design_progress_t>(
@@ -100,6 +100,10 @@ public:
                 return cancel("the client's timeout passed");
             if (options_.stop_requested && options_.stop_requested())
                 return cancel("the client was stopped");
+            // A coordinator says so once a second: a silent bus need not be waited on.
+            double quiet = options_.no_coordinator_after_s;
+            if (quiet > 0 && !answered_ && !board_.heard("coordinator") && since(start) >= quiet)
+                return failure(1, no_coordinator_message(bus_, quiet));
             if (since(heard_) >= options_.give_up_after_s)
                 return failure(1, "no coordinator answered on " + bus_.url());
             if (since(sent_) >= options_.resend_after_s &&
@@ -131,6 +135,7 @@ private:
         if (!mine(p))
             return;
         heard_ = Clock::now();
+        answered_ = true;
         if (options_.on_progress)
             options_.on_progress(progress_of(p));
     }
@@ -178,20 +183,14 @@ private:
     Clock::time_point heard_ = Clock::now();
     std::optional<envdesign::design_result_t> result_;
     std::optional<std::string> coordinator_;
+    bool answered_ = false;  // a coordinator took the request
+    bus::StatusBoard board_; // who is on the bus
 };
 
 std::int64_t new_request_id() {
     std::random_device random;
     std::uint64_t id = (static_cast<std::uint64_t>(random()) << 31) ^ random();
     return static_cast<std::int64_t>(id & 0x3fffffffffffffffULL) | 1;
-}
-
-std::shared_ptr<spdlog::logger> client_logger(const std::string &instance) {
-    auto logger = std::make_shared<spdlog::logger>(
-        instance, std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
-    logger->set_pattern("[%H:%M:%S.%e] [%^%l%$] [%n] %v");
-    logger->set_level(spdlog::level::warn);
-    return logger;
 }
 
 } // namespace
@@ -212,9 +211,6 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
     } catch (const SpecError &e) {
         return failure(2, e.what());
     }
-    std::string url = lcm_url.empty() ? default_url() : lcm_url;
-    if (auto problem = bus::url_problem(url))
-        return failure(2, *problem);
     request.sender = bus::instance_name("client");
     request.request_id = new_request_id();
     request.time_limit_s = options.time_limit_s;
@@ -222,16 +218,12 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
     request.prune = *prune;
     request.search = *search;
     request.heuristic = *heuristic;
-    std::shared_ptr<const bus::KeyRing> keys;
+    auto opened = open_client_bus(lcm_url, options.key_file, request.sender);
+    if (auto *error = std::get_if<std::pair<int, std::string>>(&opened))
+        return failure(error->first, error->second);
     try {
-        if (auto path = bus::key_file_path(options.key_file))
-            keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(*path));
-    } catch (const bus::KeyFileError &e) {
-        return failure(2, std::string("--key-file: ") + e.what());
-    }
-    try {
-        bus::Bus bus(bus::with_receive_buffer(url), client_logger(request.sender), keys);
-        return RemoteRun(bus, std::move(request), options).run();
+        bus::Bus &on = *std::get<std::unique_ptr<bus::Bus>>(opened);
+        return RemoteRun(on, std::move(request), options).run();
     } catch (const std::exception &e) {
         return failure(1, e.what());
     }

@@ -48,6 +48,9 @@ struct Options {
     double timeout_s = 0;            // stop waiting (and cancel) after this; 0: never
     double resend_after_s = 3;       // silence after which the request is sent again
     double give_up_after_s = 30;     // silence after which no coordinator is assumed
+    // No coordinator's status (it sends one a second) nor answer heard this long after the
+    // start: fail at once with "no coordinator on this bus" (exit code 1); 0: do not check.
+    double no_coordinator_after_s = 2;
     // Bus keys (deploy/LAN.md); empty: $ENVDESIGN_KEY_FILE, else an unauthenticated bus. A
     // key file that cannot be used is exit code 2.
     std::string key_file;
@@ -71,6 +74,26 @@ struct Result {
 ENVDESIGN_CLIENT_API Result run_design_remote(const std::string &spec_path,
                                               const std::string &lcm_url,
                                               const Options &options = {});
+
+struct StatusOptions {
+    double seconds = 2;   // how long to listen (services send their status once a second)
+    std::string key_file; // as Options::key_file
+};
+
+struct StatusReport {
+    // 0 a coordinator was heard, 1 none was ("no coordinator on this bus" in error), 2 a bad
+    // URL or key file (error says which).
+    int exit_code = 1;
+    std::string error;
+    int services = 0; // services heard
+    std::string text; // a table, one line a service, then its drops
+    std::string json; // JSON lines, one object a service
+};
+
+// Listens on `lcm_url` (empty: LCM's default URL) for the services' status messages
+// (ENVDESIGN_STATUS, services/README.md) for options.seconds; `envdesign status`.
+ENVDESIGN_CLIENT_API StatusReport listen_status(const std::string &lcm_url,
+                                                const StatusOptions &options = {});
 
 // A progress callback that draws a live line on stderr when it is a terminal (nothing
 // otherwise), for Options::on_progress.

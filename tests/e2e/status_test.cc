@@ -1,0 +1,158 @@
+// Health you can see (issue 11): real services publish their status once a second, idle or
+// not; `envdesign status` lists them; a client on a bus without a coordinator says so at once.
+
+#include "local_cluster.h"
+
+#include "bus/status.h"
+#include "envdesign/service_status_t.hpp"
+
+#include <envdesign/client/client.h>
+
+namespace envdesign::e2e {
+namespace {
+
+using envdesign::service_status_t;
+using Clock = std::chrono::steady_clock;
+
+const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
+
+double since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Every status heard on `url` for `seconds`, in order.
+std::vector<service_status_t> listen(const std::string &url, double seconds) {
+    bus::Bus bus(url, std::make_shared<spdlog::logger>(
+                          "listener", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    std::vector<service_status_t> heard;
+    auto sub = bus.subscribe<service_status_t>(
+        bus::STATUS, [&](const service_status_t &s) { heard.push_back(s); });
+    auto start = Clock::now();
+    while (since(start) < seconds)
+        bus.handle(std::chrono::milliseconds(20));
+    return heard;
+}
+
+std::vector<service_status_t> of(const std::vector<service_status_t> &all,
+                                 const std::string &sender) {
+    std::vector<service_status_t> some;
+    for (const auto &s : all)
+        if (s.sender == sender)
+            some.push_back(s);
+    return some;
+}
+
+TEST(Status, IdleCoordinatorAndPlannersPublishOnceASecond) {
+    LocalCluster cluster(2);
+    auto heard = listen(cluster.url(), 3.5);
+    auto coordinator = of(heard, "coordinator");
+    // 3.5 s at 1 Hz: 3 or 4, not the 0 of a silent coordinator nor a flood.
+    ASSERT_GE(coordinator.size(), 3u) << cluster.logs();
+    EXPECT_LE(coordinator.size(), 5u);
+    const service_status_t &last = coordinator.back();
+    EXPECT_EQ(last.kind, "coordinator");
+    EXPECT_EQ(last.version, bus::version());
+    EXPECT_EQ(last.planners, 2);
+    EXPECT_EQ(last.requests_open, 0);
+    EXPECT_EQ(last.requests_waiting, 0);
+    EXPECT_EQ(last.period_ms, 1000);
+    EXPECT_GT(last.uptime_s, coordinator.front().uptime_s + 1.5);
+    for (std::string planner : {"planner-0", "planner-1"}) {
+        auto beats = of(heard, planner);
+        ASSERT_GE(beats.size(), 3u) << planner;
+        EXPECT_LE(beats.size(), 5u) << planner;
+        EXPECT_EQ(beats.back().kind, "planner");
+        EXPECT_EQ(beats.back().jobs_done, 0);
+    }
+}
+
+TEST(Status, CountsWhatTheServicesDid) {
+    LocalCluster cluster(2);
+    client::Options options;
+    options.give_up_after_s = 10;
+    client::Result result = client::run_design_remote(source(RESTAURANT), cluster.url(), options);
+    ASSERT_EQ(result.exit_code, 0) << result.error << cluster.logs();
+    // A message that does not decode is dropped and counted in the coordinator's status.
+    {
+        bus::Bus garbage(cluster.url(),
+                         std::make_shared<spdlog::logger>(
+                             "garbage", std::make_shared<spdlog::sinks::null_sink_mt>()));
+        garbage.publish_raw(bus::REQUEST, "not a request", 13);
+    }
+    auto heard = listen(cluster.url(), 2.2);
+    auto coordinator = of(heard, "coordinator");
+    ASSERT_FALSE(coordinator.empty()) << cluster.logs();
+    const service_status_t &c = coordinator.back();
+    EXPECT_EQ(c.jobs_done, 1); // one result published
+    EXPECT_EQ(c.requests_open, 0);
+    EXPECT_EQ(c.jobs_in_flight, 0);
+    EXPECT_GT(c.stored_evaluations, 0);
+    EXPECT_EQ(c.malformed, 1);
+    long long planner_jobs = 0;
+    for (std::string planner : {"planner-0", "planner-1"}) {
+        auto beats = of(heard, planner);
+        ASSERT_FALSE(beats.empty()) << planner;
+        planner_jobs += beats.back().jobs_done;
+    }
+    EXPECT_GT(planner_jobs, 0);
+}
+
+TEST(Status, CommandListsTheServices) {
+    LocalCluster cluster(2);
+    int exit_code = -1;
+    std::string table = command_output(binary("envdesign") + " status --connect '" + cluster.url() +
+                                           "' --seconds 2.5 2>&1",
+                                       &exit_code);
+    EXPECT_EQ(exit_code, 0) << table;
+    for (const char *name : {"coordinator", "planner-0", "planner-1", "KIND"})
+        EXPECT_NE(table.find(name), std::string::npos) << name << " not in\n" << table;
+
+    std::string lines = command_output(binary("envdesign") + " status --json --connect '" +
+                                           cluster.url() + "' --seconds 2.5",
+                                       &exit_code);
+    EXPECT_EQ(exit_code, 0) << lines;
+    std::istringstream in(lines);
+    std::map<std::string, nlohmann::json> by_name;
+    for (std::string line; std::getline(in, line);) {
+        auto j = nlohmann::json::parse(line);
+        by_name[j["name"]] = j;
+    }
+    ASSERT_EQ(by_name.size(), 3u) << lines;
+    EXPECT_EQ(by_name["coordinator"]["kind"], "coordinator");
+    EXPECT_EQ(by_name["coordinator"]["planners"], 2);
+    EXPECT_EQ(by_name["planner-1"]["kind"], "planner");
+    EXPECT_TRUE(by_name["coordinator"]["drops"].is_array());
+}
+
+TEST(Status, CommandOnAnEmptyBusSaysNoCoordinator) {
+    int exit_code = -1;
+    auto start = Clock::now();
+    std::string said = command_output(binary("envdesign") + " status --connect '" + unique_url(7) +
+                                          "' --seconds 1 2>&1",
+                                      &exit_code);
+    EXPECT_EQ(exit_code, 1) << said;
+    EXPECT_NE(said.find("no coordinator on this bus"), std::string::npos) << said;
+    EXPECT_LT(since(start), 3.0);
+}
+
+TEST(Status, ClientWithoutCoordinatorFailsWithinTwoSeconds) {
+    client::Options options; // the defaults: it would wait 30 s for an answer
+    auto start = Clock::now();
+    client::Result result = client::run_design_remote(source(RESTAURANT), unique_url(8), options);
+    double took = since(start);
+    EXPECT_EQ(result.exit_code, 1);
+    EXPECT_NE(result.error.find("no coordinator on this bus"), std::string::npos) << result.error;
+    EXPECT_GE(took, 1.9);
+    EXPECT_LT(took, 3.0);
+
+    // The CLI says the same.
+    int exit_code = -1;
+    std::string said = command_output(binary("envdesign") + " design " + source(RESTAURANT) +
+                                          " --connect '" + unique_url(8) + "' 2>&1",
+                                      &exit_code);
+    EXPECT_EQ(exit_code, 1) << said;
+    EXPECT_NE(said.find("no coordinator on this bus"), std::string::npos) << said;
+}
+
+} // namespace
+} // namespace envdesign::e2e
