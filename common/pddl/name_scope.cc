@@ -15,8 +15,10 @@ const std::map<std::string, std::string> UNSUPPORTED_CONNECTIVES = {
     {"decrease", "'decrease' (numeric fluents)"},
     {"scale-up", "'scale-up' (numeric fluents)"},
     {"scale-down", "'scale-down' (numeric fluents)"},
-    {"<", "'<' (numeric comparison)"}, {">", "'>' (numeric comparison)"},
-    {"<=", "'<=' (numeric comparison)"}, {">=", "'>=' (numeric comparison)"},
+    {"<", "'<' (numeric comparison)"},
+    {">", "'>' (numeric comparison)"},
+    {"<=", "'<=' (numeric comparison)"},
+    {">=", "'>=' (numeric comparison)"},
 };
 
 std::vector<std::string> parse_type_spec(const SExpr &e,
@@ -43,7 +45,7 @@ std::vector<std::string> parse_type_spec(const SExpr &e,
     return names;
 }
 
-}  // namespace
+} // namespace
 
 void reject_unsupported(const SExpr &e, const std::string &feature) {
     throw ParseError(e.location, feature + " is not supported (envdesign accepts STRIPS with "
@@ -126,9 +128,10 @@ Atom NameScope::parse_atom(const SExpr &e, bool functions) const {
             throw ParseError(arg.location, "expected a variable or object name " + context_);
         if (!names_.count(arg.symbol)) {
             bool variable = !arg.symbol.empty() && arg.symbol[0] == '?';
-            throw ParseError(arg.location, std::string(variable ? "undefined variable '"
-                                                                : "undefined object or constant '") +
-                                               arg.symbol + "' " + context_);
+            throw ParseError(
+                arg.location,
+                std::string(variable ? "undefined variable '" : "undefined object or constant '") +
+                    arg.symbol + "' " + context_);
         }
         atom.args.push_back(arg.symbol);
     }
@@ -159,4 +162,4 @@ std::vector<Literal> NameScope::parse_conjunction(const SExpr &e, const std::str
     return result;
 }
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl
