@@ -144,7 +144,7 @@ TEST(Reweigh, MissingEvaluationsWaitForTheDriftThreshold) {
 // interval, and not while a request is pending.
 TEST(Reweigh, DueOnChangeRateLimitedNotWhilePending) {
     TrackerConfig c = bridge_config();
-    c.drift.min_samples = 1;
+    c.drift.min_samples = 3; // no drift request from the first two arrivals
     c.drift.holdoff_arrivals = 1;
     ArrivalTracker tracker(c);
     tracker.add_problem("p", {{"a", 0.5}, {"b", 0.5}});
@@ -162,7 +162,7 @@ TEST(Reweigh, DueOnChangeRateLimitedNotWhilePending) {
     EXPECT_TRUE(tracker.reweighs_due(1.0).empty()); // no change since
     arrive("a", 1.0);
     EXPECT_EQ(tracker.reweighs_due(1.0).size(), 1u);
-    arrive("a", 1.05);
+    arrive("b", 1.05);
     EXPECT_TRUE(tracker.reweighs_due(1.05).empty()); // within 0.1 s
     EXPECT_EQ(tracker.reweighs_due(1.1).size(), 1u);
     // Drift to a pending request: no re-weighting until it is answered.
