@@ -1,7 +1,6 @@
 #include "arrivals/intake.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace envdesign::arrivals {
 namespace {
@@ -91,7 +90,7 @@ Verdict ArrivalIntake::check_fields(const Arrival &a, bool problem_known, int64_
     double ahead_s = (static_cast<double>(a.utime) - static_cast<double>(now_utime)) * 1e-6;
     // Ahead by more than max_future_s but less than max_age_s: a skewed clock (check()
     // counts it); further ahead than any clock is wrong: garbage.
-    if (a.utime <= 0 || std::abs(ahead_s) > config_.max_age_s)
+    if (a.utime <= 0 || ahead_s > config_.max_age_s || -ahead_s > config_.max_age_s)
         return Verdict::BAD_TIMESTAMP;
     if (a.sequence <= 0)
         return Verdict::BAD_SEQUENCE;
