@@ -165,7 +165,7 @@ void ArrivalTracker::reweighed(const std::string &id, const Distribution &refere
     auto it = problems_.find(id);
     if (it == problems_.end() || it->second.detector.state() == DriftState::PENDING)
         return;
-    it->second.detector.answered(reference, it->second.estimator.estimate());
+    it->second.detector.rebase(reference, it->second.estimator.estimate());
 }
 
 std::optional<ProblemStatus> ArrivalTracker::status(const std::string &id) const {

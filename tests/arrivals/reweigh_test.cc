@@ -176,6 +176,12 @@ TEST(Reweigh, DueOnChangeRateLimitedNotWhilePending) {
     tracker.answered("p", pending->estimate, 3.0);
     EXPECT_EQ(tracker.reweighs_due(3.0).size(), 1u);
     EXPECT_EQ(tracker.status("p")->reweighs, 4);
+    // The estimate moved on while that re-weighting ran: the reference moves, the detector
+    // stays armed (answered() would hold it for 30 s: a stale design at 1000 arrivals/s).
+    tracker.reweighed("p", {{"a", 0.5}, {"b", 0.5}});
+    EXPECT_EQ(tracker.status("p")->state, DriftState::ARMED);
+    EXPECT_EQ(tracker.status("p")->reference, (Distribution{{"a", 0.5}, {"b", 0.5}}));
+    EXPECT_FALSE(arrive("a", 4.0).request == std::nullopt); // far from it: drift at once
 }
 
 // Arrivals stamped 10 minutes ahead of the bridge's clock (beyond --max-future 300 s) still
