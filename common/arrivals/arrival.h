@@ -12,6 +12,9 @@
 //                   hysteresis)
 //           -> a re-evaluation request; the coordinator answers with a new design
 //              (redesign.h re-weights stored evaluations instead of planning again).
+//           -> on every change of the estimate (rate-limited, tracker.h reweighs_due): a
+//              re-weighting over the stored evaluations alone (Redesigner::reweigh), so the
+//              design in force follows D wherever no planner is needed.
 //
 // Everything in this folder is transport-free and takes the time as an argument, so that
 // tests drive it with hand-made clocks; common/dds and services/bridge connect it to DDS

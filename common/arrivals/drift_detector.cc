@@ -49,6 +49,13 @@ void DriftDetector::answered(const Distribution &reference, const Distribution &
     state_ = as_requested || close ? DriftState::ARMED : DriftState::HELD;
 }
 
+void DriftDetector::rebase(const Distribution &reference, const Distribution &estimate) {
+    reference_ = reference;
+    last_tv_ = total_variation(reference_, estimate);
+    if (state_ == DriftState::HELD && last_tv_ < config_.rearm_threshold)
+        state_ = DriftState::ARMED;
+}
+
 const char *to_string(DriftState state) {
     switch (state) {
     case DriftState::ARMED:

@@ -58,6 +58,11 @@ public:
     // problem), with the estimate at that moment.
     void answered(const Distribution &reference, const Distribution &estimate);
 
+    // A re-weighting (tracker.h) proved the design in force optimal for `reference`: measure
+    // from there. No request was answered, so the state stays (HELD re-arms if close):
+    // the estimate moving on while the re-weighting ran is drift to follow, not a refusal.
+    void rebase(const Distribution &reference, const Distribution &estimate);
+
     DriftState state() const { return state_; }
     const Distribution &reference() const { return reference_; }
     double last_distance() const { return last_tv_; }

@@ -76,6 +76,12 @@ Verdict ArrivalIntake::check(const Arrival &arrival, bool problem_known, double 
         }
     }
     ++counters_.by_verdict[static_cast<int>(verdict)];
+    double ahead_s = (static_cast<double>(arrival.utime) - static_cast<double>(now_utime)) * 1e-6;
+    last_skewed_ = verdict == Verdict::ACCEPTED && ahead_s > config_.max_future_s;
+    if (last_skewed_) {
+        ++counters_.clock_skewed;
+        counters_.last_skew_s = ahead_s;
+    }
     return verdict;
 }
 
@@ -91,7 +97,9 @@ Verdict ArrivalIntake::check_fields(const Arrival &a, bool problem_known, int64_
         return Verdict::TOO_LARGE;
     // In double seconds, so that absurd values (INT64_MIN, INT64_MAX) cannot overflow.
     double ahead_s = (static_cast<double>(a.utime) - static_cast<double>(now_utime)) * 1e-6;
-    if (a.utime <= 0 || ahead_s > config_.max_future_s || -ahead_s > config_.max_age_s)
+    // Ahead by more than max_future_s but less than max_age_s: a skewed clock (check()
+    // counts it); further ahead than any clock is wrong: garbage.
+    if (a.utime <= 0 || ahead_s > config_.max_age_s || -ahead_s > config_.max_age_s)
         return Verdict::BAD_TIMESTAMP;
     if (a.sequence <= 0)
         return Verdict::BAD_SEQUENCE;

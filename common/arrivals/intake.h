@@ -8,8 +8,7 @@
 //   EMPTY_TASK       no task name
 //   BAD_NAME         a name longer than max_name_length or with control characters
 //   TOO_LARGE        a new task's problem text beyond max_problem_bytes
-//   BAD_TIMESTAMP    utime <= 0, more than max_future_s ahead of the bridge's clock, or more
-//                    than max_age_s behind it
+//   BAD_TIMESTAMP    utime <= 0, or more than max_age_s behind or ahead of the bridge's clock
 //   BAD_SEQUENCE     sequence_number <= 0
 //   DUPLICATE        a sequence number of this (problem, site) already seen (a sample
 //                    delivered twice, or a replay); sequence 1 after a higher one is taken
@@ -17,6 +16,10 @@
 //   TOO_MANY_SITES   a new (problem, site) beyond max_sites (bounds the bridge's memory)
 //   RATE_LIMITED     beyond max_rate arrivals per second from this (problem, site), with a
 //                    burst of `burst` (a token bucket on the bridge's monotonic clock)
+// An arrival stamped more than max_future_s ahead of the bridge's clock is accepted and
+// counted in `clock_skewed`: the publisher's clock (or the bridge's) is off. The estimate
+// uses arrival order, never timestamps, so a skewed site still moves it; rejecting its
+// arrivals would silently freeze the estimate of a site whose clock runs 5 minutes fast.
 // Sequence numbers are followed for every sample of a known problem with a usable site,
 // whatever else is wrong with it (it did arrive). Arrivals whose sequence skips numbers add
 // the skipped count to `sequence_gaps`
@@ -37,8 +40,8 @@
 namespace envdesign::arrivals {
 
 struct IntakeConfig {
-    double max_future_s = 300;          // clock skew tolerated ahead of the bridge
-    double max_age_s = 7 * 24 * 3600.0; // oldest arrival accepted
+    double max_future_s = 300;          // beyond this ahead of the bridge: clock_skewed
+    double max_age_s = 7 * 24 * 3600.0; // oldest arrival accepted (and furthest ahead)
     double max_rate = 0;                // per (problem, site), arrivals/s; 0: no limit
     double burst = 1000;                // token bucket size for max_rate
     std::size_t max_name_length = 256;  // problem_id, site, task
@@ -70,6 +73,8 @@ struct IntakeCounters {
     long long sequence_unseen = 0;       // numbers before the first arrival seen from a site:
                                          // sent before the bridge started, or lost
     long long site_restarts = 0;         // sequence 1 again after a higher one
+    long long clock_skewed = 0;          // accepted with utime beyond max_future_s ahead
+    double last_skew_s = 0;              // how far ahead the last of them was, seconds
 
     long long count(Verdict v) const { return by_verdict[static_cast<int>(v)]; }
     long long rejected() const { return received - count(Verdict::ACCEPTED); }
@@ -83,6 +88,8 @@ public:
     // monotonic clock (for the rate limit); `now_utime` the wall clock in microseconds
     // since the Unix epoch (for the timestamp check).
     Verdict check(const Arrival &arrival, bool problem_known, double now, int64_t now_utime);
+    // Whether the last check() accepted an arrival stamped beyond max_future_s ahead.
+    bool last_skewed() const { return last_skewed_; }
 
     const IntakeCounters &counters() const { return counters_; }
 
@@ -99,6 +106,7 @@ private:
 
     IntakeConfig config_;
     IntakeCounters counters_;
+    bool last_skewed_ = false;
     std::map<std::pair<std::string, std::string>, Site> sites_;
 };
 

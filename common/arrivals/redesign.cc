@@ -43,13 +43,31 @@ std::string number(double x) {
     return text;
 }
 
+// Answers every configuration "not evaluated" (LIMIT) at once: behind a StoredEvaluator it
+// makes a search that uses what is stored and, where that is not enough, ends not optimal
+// instead of planning.
+class NoPlanner : public design::Evaluator {
+public:
+    void evaluate(const std::vector<design::ConfigurationEvaluation> &batch,
+                  const design::Deadline &, const design::EvaluationCallbacks &callbacks) override {
+        for (const auto &request : batch) {
+            design::ConfigurationEvaluation refused = request;
+            refused.status = design::EvaluationStatus::LIMIT;
+            callbacks.done(std::move(refused));
+        }
+    }
+    design::EvaluatorCounters counters() const override { return {}; }
+};
+
 } // namespace
 
 Redesigner::Redesigner(DesignProblem problem, RedesignOptions options)
     : problem_(std::make_unique<DesignProblem>(std::move(problem))), options_(options),
       local_(std::make_unique<design::LocalEvaluator>(*problem_, options.workers, options.planner)),
       store_(options.evaluations, design::store_key(*problem_, options.planner.heuristic)),
-      stored_(std::make_unique<design::StoredEvaluator>(*problem_, *local_, store_)) {}
+      stored_(std::make_unique<design::StoredEvaluator>(*problem_, *local_, store_)),
+      no_planner_(std::make_unique<NoPlanner>()),
+      store_only_(std::make_unique<design::StoredEvaluator>(*problem_, *no_planner_, store_)) {}
 
 Distribution Redesigner::distribution() const {
     Distribution d;
@@ -109,15 +127,15 @@ void Redesigner::set_probabilities(const Distribution &d) {
     }
 }
 
-design::DesignResult Redesigner::search() {
+design::DesignResult Redesigner::search(design::Evaluator &evaluator) {
     design::DesignSearchOptions options;
     options.max_design_size =
         options_.max_design_size >= 0 ? options_.max_design_size : problem_->max_design_size;
     options.deadline = design::Deadline::in(options_.time_limit_s >= 0 ? options_.time_limit_s
                                                                        : problem_->time_limit_s);
     options.batch_size = 4 * std::max(1, options_.workers);
-    design::EvaluatorCounters before = stored_->counters();
-    design::DesignResult result = design::search_design(*problem_, *stored_, options);
+    design::EvaluatorCounters before = evaluator.counters();
+    design::DesignResult result = design::search_design(*problem_, evaluator, options);
     // The evaluator's counters run over every search; report this one's.
     auto &c = result.counters.evaluator;
     c.task_evaluations -= before.task_evaluations;
@@ -144,7 +162,7 @@ Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> 
     set_probabilities(d);
     Redesign out;
     try {
-        out.result = search();
+        out.result = search(*stored_);
     } catch (const pddl::ParseError &e) {
         if (added.empty())
             throw;
@@ -155,7 +173,7 @@ Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> 
         }
         added.clear();
         set_probabilities(d);
-        out.result = search();
+        out.result = search(*stored_);
     }
     out.change = describe(out, d_before, added, refused);
     out.change.stored_answers = stored_->stored_answers() - stored_before;
@@ -163,6 +181,29 @@ Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> 
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (out.result.best)
         current_ = out.result.best;
+    return out;
+}
+
+std::optional<Redesign> Redesigner::reweigh(const Distribution &d) {
+    auto start = std::chrono::steady_clock::now();
+    ++reweighs_;
+    Distribution d_before = distribution();
+    long long stored_before = store_only_->stored_answers();
+    set_probabilities(d);
+    Redesign out;
+    out.result = search(*store_only_);
+    // Not optimal: a configuration it needed was refused (or the deadline passed), so its
+    // best is not proven; the design in force stays the one proven for d_before.
+    if (!out.result.optimal || !out.result.best) {
+        ++reweighs_needing_planning_;
+        set_probabilities(d_before);
+        return std::nullopt;
+    }
+    out.change = describe(out, d_before, {}, {});
+    out.change.stored_answers = store_only_->stored_answers() - stored_before;
+    out.change.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    current_ = out.result.best;
     return out;
 }
 

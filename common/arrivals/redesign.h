@@ -19,6 +19,8 @@
 //   Redesign first = r.redesign(r.distribution(), {});        // the spec's D
 //   Redesign next = r.redesign({{"serve-g1", 0.1}, {"serve-g2", 0.9}}, {});
 //   next.change.changed, next.change.explanation, next.change.planner_runs (0: re-weighting)
+//   auto cheap = r.reweigh({{"serve-g1", 0.2}, {"serve-g2", 0.8}});  // store only, no planner
+//   if (!cheap) ... planning is needed: wait for the drift threshold, then redesign()
 //
 // Not thread-safe; the problem must not be changed by anything else.
 
@@ -86,6 +88,15 @@ public:
     // models of new tasks (e.g. a ParseError from a modification of the original tasks).
     Redesign redesign(const Distribution &d, const std::vector<NewTask> &new_tasks);
 
+    // The same search for `d` (no new tasks) answered from the store alone: a planner is
+    // never run. Returns the redesign when the search proved its design optimal for `d` (the
+    // probabilities are `d` from then on); nullopt when it needed an evaluation the store
+    // lacks, and then nothing changed. Microseconds to milliseconds: cheap enough to run on
+    // every change of the estimate, so the design in force never lags a D the store covers.
+    std::optional<Redesign> reweigh(const Distribution &d);
+    long long reweighs() const { return reweighs_; }
+    long long reweighs_needing_planning() const { return reweighs_needing_planning_; }
+
     const std::optional<design::EvaluatedDesign> &current() const { return current_; }
     const design::EvaluationStore &store() const { return store_; }
 
@@ -94,7 +105,7 @@ private:
     std::optional<std::string> add_task(const NewTask &task);
     void remove_task(const std::string &name);
     void set_probabilities(const Distribution &d);
-    design::DesignResult search();
+    design::DesignResult search(design::Evaluator &evaluator);
     double objective_of(const design::Configuration &configuration) const;
     DesignChange describe(const Redesign &redesign, const Distribution &d_before,
                           const std::vector<std::string> &added,
@@ -105,6 +116,11 @@ private:
     std::unique_ptr<design::LocalEvaluator> local_;
     design::EvaluationStore store_;
     std::unique_ptr<design::StoredEvaluator> stored_;
+    // reweigh(): the same store in front of an evaluator that refuses to plan.
+    std::unique_ptr<design::Evaluator> no_planner_;
+    std::unique_ptr<design::StoredEvaluator> store_only_;
+    long long reweighs_ = 0;
+    long long reweighs_needing_planning_ = 0;
     std::optional<design::EvaluatedDesign> current_;
 };
 

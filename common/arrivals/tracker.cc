@@ -12,6 +12,8 @@ const char *to_string(Reason reason) {
         return "new_task";
     case Reason::DRIFT:
         return "drift";
+    case Reason::REWEIGH:
+        return "reweigh";
     }
     return "?";
 }
@@ -62,6 +64,7 @@ Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_
     auto it = problems_.find(arrival.problem_id);
     Outcome out;
     out.verdict = intake_.check(arrival, it != problems_.end(), now, now_utime);
+    out.clock_skewed = intake_.last_skewed();
     if (out.verdict != Verdict::ACCEPTED)
         return out;
     Problem &p = it->second;
@@ -139,6 +142,30 @@ std::optional<Request> ArrivalTracker::answered(const std::string &id,
     if (p.proposed.empty() || !p.detector.force(now, estimate))
         return std::nullopt;
     return make_request(p, Reason::NEW_TASK);
+}
+
+std::vector<Request> ArrivalTracker::reweighs_due(double now) {
+    std::vector<Request> due;
+    if (config_.reweigh_interval_s <= 0)
+        return due;
+    for (auto &[id, p] : problems_) {
+        bool changed = p.status.estimated != p.reweighed_estimated;
+        if (!changed || now - p.reweighed_at < config_.reweigh_interval_s ||
+            p.detector.state() == DriftState::PENDING || !p.proposed.empty())
+            continue;
+        p.reweighed_estimated = p.status.estimated;
+        p.reweighed_at = now;
+        ++p.status.reweighs;
+        due.push_back(make_request(p, Reason::REWEIGH));
+    }
+    return due;
+}
+
+void ArrivalTracker::reweighed(const std::string &id, const Distribution &reference) {
+    auto it = problems_.find(id);
+    if (it == problems_.end() || it->second.detector.state() == DriftState::PENDING)
+        return;
+    it->second.detector.rebase(reference, it->second.estimator.estimate());
 }
 
 std::optional<ProblemStatus> ArrivalTracker::status(const std::string &id) const {

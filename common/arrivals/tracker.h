@@ -11,6 +11,15 @@
 //     it and the task counts as unknown from then on;
 //   - UNKNOWN_TASK otherwise: counted (per task name), not estimated.
 //
+// Re-weighting: besides the requests above, which may need planners and so wait for the
+// drift threshold, reweighs_due() names the problems whose estimate changed since their last
+// re-weighting (at most one per reweigh_interval_s each): the design search is re-run for
+// the estimate over stored evaluations alone (Redesigner::reweigh), so the design in force
+// follows every D the store covers and never lags by up to `threshold`. A re-weighting that
+// needs an evaluation the store lacks changes nothing; the drift detector, still measuring
+// from the D the design was last proven for, asks for the planners once TV passes the
+// threshold.
+//
 // Not thread-safe: the bridge serialises calls.
 //
 // Example:
@@ -36,6 +45,7 @@ struct TrackerConfig {
     EstimatorConfig estimator;
     DriftConfig drift;
     IntakeConfig intake;
+    double reweigh_interval_s = 0.1; // per problem, at most this often; <= 0: never
 };
 
 struct NewTask {
@@ -48,6 +58,7 @@ enum class Reason {
     INITIAL,  // the design for the spec's D, asked for when tracking starts
     DRIFT,    // TV(reference, estimate) passed the threshold
     NEW_TASK, // a new task came with its problem
+    REWEIGH,  // the estimate changed: re-weigh stored evaluations, no planner (reweighs_due)
 };
 const char *to_string(Reason reason);
 
@@ -71,6 +82,7 @@ struct Outcome {
     Verdict verdict = Verdict::ACCEPTED;
     Use use = Use::REJECTED;
     bool first_of_name = false; // UNKNOWN_TASK: the first arrival of this task name
+    bool clock_skewed = false;  // accepted though stamped beyond max_future_s ahead
     std::optional<Request> request;
 };
 
@@ -88,6 +100,7 @@ struct ProblemStatus {
     long long refused_tasks = 0;
     long long requests = 0;
     long long timeouts = 0;
+    long long reweighs = 0; // re-weightings asked for (reweighs_due)
     // Arrivals per unknown task name; the first MAX_UNKNOWN_NAMES names only (a flood of
     // made-up names must not grow the bridge without bound), the rest only in unknown_task.
     std::map<std::string, long long> unknown_task_names;
@@ -115,6 +128,15 @@ public:
     std::optional<Request> answered(const std::string &id, const Distribution &reference,
                                     double now);
 
+    // Problems whose estimate changed since their last re-weighting, at most one request per
+    // problem and reweigh_interval_s; none while a request of theirs is pending or new tasks
+    // wait (the redesign for those comes first). The requests' D is the estimate.
+    std::vector<Request> reweighs_due(double now);
+    // A re-weighting for `reference` proved its design optimal: that design is in force and
+    // the drift detector measures from `reference` (ignored while a request is pending: its
+    // answer sets the reference).
+    void reweighed(const std::string &id, const Distribution &reference);
+
     std::optional<ProblemStatus> status(const std::string &id) const;
     std::vector<std::string> problem_ids() const;
     const IntakeCounters &counters() const { return intake_.counters(); }
@@ -129,6 +151,8 @@ private:
         DistributionEstimator estimator;
         DriftDetector detector;
         ProblemStatus status;
+        long long reweighed_estimated = 0; // status.estimated at the last re-weighting
+        double reweighed_at = -1e300;
     };
 
     Use classify(Problem &p, const Arrival &arrival, bool &first_of_name);

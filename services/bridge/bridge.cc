@@ -32,10 +32,18 @@ std::string quoted(const std::string &s) {
     return "'" + out + (s.size() > 60 ? "...'" : "'");
 }
 
+// The coordinator keeps its store to itself: only --redesign local can re-weigh.
+arrivals::TrackerConfig with_reweighing(const BridgeConfig &config) {
+    arrivals::TrackerConfig c = config.tracker;
+    if (config.mode != Mode::LOCAL)
+        c.reweigh_interval_s = 0;
+    return c;
+}
+
 } // namespace
 
 Bridge::Bridge(bus::Bus &bus, BridgeConfig config)
-    : bus_(bus), config_(std::move(config)), tracker_(config_.tracker) {
+    : bus_(bus), config_(std::move(config)), tracker_(with_reweighing(config_)) {
     std::map<std::string, design::DesignProblem> problems;
     std::map<std::string, envdesign::spec_t> specs;
     for (const auto &source : config_.problems) {
@@ -47,10 +55,12 @@ Bridge::Bridge(bus::Bus &bus, BridgeConfig config)
         problems.emplace(source.id, std::move(problem));
     }
     Answered answered = [this](Answer a) { on_answer(std::move(a)); };
-    if (config_.mode == Mode::LOCAL)
-        backend_ = std::make_unique<LocalRedesigns>(bus_, config_.instance, std::move(problems),
-                                                    config_.local, answered);
-    else
+    if (config_.mode == Mode::LOCAL) {
+        auto local = std::make_unique<LocalRedesigns>(bus_, config_.instance, std::move(problems),
+                                                      config_.local, answered);
+        local_ = local.get();
+        backend_ = std::move(local);
+    } else
         backend_ = std::make_unique<CoordinatorRedesigns>(bus_, config_.instance, std::move(specs),
                                                           std::move(problems), config_.coordinator,
                                                           answered);
@@ -101,6 +111,7 @@ void Bridge::take_batch(std::vector<arrivals::Arrival> &batch) {
     std::int64_t utime = bus::now_utime();
     for (const auto &arrival : batch)
         receive(arrival, t, utime);
+    reweigh(t);
     for (const auto &[id, published] : problems_)
         publish_estimate(id, t, false);
 }
@@ -110,6 +121,15 @@ void Bridge::receive(const arrivals::Arrival &arrival, double t, std::int64_t ut
     if (outcome.verdict != arrivals::Verdict::ACCEPTED ||
         outcome.use == arrivals::Use::UNKNOWN_TASK)
         log_rejected(arrival, outcome, t);
+    if (outcome.clock_skewed) {
+        arrivals::LogThrottle::Decision d = skew_throttle_.should_log(outcome.verdict, t);
+        if (d.log)
+            bus_.log().warn("request - | {}: site {} stamps arrivals {:.0f} s ahead of this "
+                            "clock (beyond --max-future): estimating from arrival order{}",
+                            arrival.problem_id, quoted(arrival.site),
+                            tracker_.counters().last_skew_s,
+                            d.suppressed ? fmt::format(" ({} more not logged)", d.suppressed) : "");
+    }
     if (outcome.use == arrivals::Use::NEW_TASK)
         bus_.log().info("request - | {}: new task {} from site {}, with its problem ({} bytes)",
                         arrival.problem_id, quoted(arrival.task), quoted(arrival.site),
@@ -139,6 +159,7 @@ void Bridge::log_rejected(const arrivals::Arrival &a, const arrivals::Outcome &o
 
 void Bridge::send(const arrivals::Request &request) {
     std::int64_t id = ++next_request_id_;
+    ++requests_;
     Published &p = problems_[request.problem_id];
     p.design.request_id = id;
     auto status = tracker_.status(request.problem_id);
@@ -170,10 +191,38 @@ void Bridge::publish_estimate(const std::string &id, double t, bool force) {
     p.estimated = status->estimated;
 }
 
+void Bridge::reweigh(double t) {
+    if (!local_)
+        return;
+    for (const auto &request : tracker_.reweighs_due(t))
+        local_->reweigh(++next_request_id_, request);
+}
+
+void Bridge::on_reweighed(const Answer &answer) {
+    ++reweighs_;
+    if (!answer.reference) { // needs planners: the drift threshold decides when
+        ++reweigh_planning_;
+        return;
+    }
+    tracker_.reweighed(answer.problem_id, *answer.reference);
+    if (!answer.changed)
+        return;
+    ++reweigh_changes_;
+    Published &p = problems_[answer.problem_id];
+    std::int64_t last_request = p.design.request_id;
+    p.design = answer.design;
+    p.design.request_id = last_request;
+    publish_estimate(answer.problem_id, now(), true);
+}
+
 void Bridge::on_answer(Answer answer) {
     std::lock_guard lock(mutex_);
     if (stopping_)
         return;
+    if (answer.reweigh) {
+        on_reweighed(answer);
+        return;
+    }
     ++answers_;
     Published &p = problems_[answer.problem_id];
     std::int64_t last_request = p.design.request_id;
@@ -194,8 +243,11 @@ void Bridge::on_answer(Answer answer) {
 void Bridge::tick() {
     std::lock_guard lock(mutex_);
     double t = now();
+    reweigh(t); // the last arrivals of a burst, held back by the rate limit
     for (const auto &[id, published] : problems_)
         publish_estimate(id, t, false);
+    for (const auto &[verdict, count] : skew_throttle_.overdue(t))
+        bus_.log().warn("request - | {} more arrivals with skewed clocks not logged", count);
     for (const auto &[verdict, count] : throttle_.overdue(t))
         bus_.log().warn("request - | {} more bad arrivals ({}) not logged", count,
                         arrivals::to_string(verdict));
@@ -203,7 +255,8 @@ void Bridge::tick() {
 
 BridgeStats Bridge::stats() const {
     std::lock_guard lock(mutex_);
-    return {tracker_.counters(), next_request_id_, answers_};
+    return {tracker_.counters(), requests_,        answers_,
+            reweighs_,           reweigh_changes_, reweigh_planning_};
 }
 
 } // namespace envdesign::bridge

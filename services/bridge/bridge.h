@@ -9,6 +9,9 @@
 //         envdesign-coordinator through ENVDESIGN_REQUEST
 //   ENVDESIGN_RESULT <-- the new design, with what changed and why; its D becomes the
 //   reference the drift detector compares the estimate with.
+//   --redesign local: every change of an estimate (at most every reweigh_interval_s) is
+//   also re-weighed over the stored evaluations (no planner); when that proves another
+//   design optimal it is published at once, so the drift threshold only gates planning.
 //
 // Threads: the DDS reader thread takes samples and feeds the tracker; the bus thread (the
 // one calling bus.handle() and tick()) takes results; the local backend has its own worker.
@@ -61,6 +64,9 @@ struct BridgeStats {
     arrivals::IntakeCounters intake;
     long long requests = 0; // re-evaluations asked for (the initial ones included)
     long long answers = 0;
+    long long reweighs = 0;         // re-weightings answered
+    long long reweigh_changes = 0;  // of those, new designs published
+    long long reweigh_planning = 0; // of those, needing evaluations the store lacks
 };
 
 class Bridge {
@@ -80,6 +86,8 @@ private:
     void log_rejected(const arrivals::Arrival &arrival, const arrivals::Outcome &outcome,
                       double now);
     void send(const arrivals::Request &request);
+    void reweigh(double now);
+    void on_reweighed(const Answer &answer);
     void publish_estimate(const std::string &id, double now, bool force);
     void on_answer(Answer answer);
     double now() const;
@@ -90,6 +98,7 @@ private:
     mutable std::mutex mutex_;
     arrivals::ArrivalTracker tracker_;
     arrivals::LogThrottle throttle_;
+    arrivals::LogThrottle skew_throttle_; // accepted arrivals with a skewed clock
     struct Published {
         DesignInForce design;
         double at = -1e9;         // last estimate sent
@@ -97,8 +106,11 @@ private:
     };
     std::map<std::string, Published> problems_;
     std::int64_t next_request_id_ = 0;
+    long long requests_ = 0;
     long long answers_ = 0;
+    long long reweighs_ = 0, reweigh_changes_ = 0, reweigh_planning_ = 0;
     std::unique_ptr<RedesignBackend> backend_;
+    LocalRedesigns *local_ = nullptr;          // backend_ in Mode::LOCAL: it can re-weigh
     std::optional<bus::Subscription> results_; // optional: bus.h's default constructor
                                                // needs a type only bus.cc sees
     std::unique_ptr<dds::ArrivalReader> reader_;

@@ -51,9 +51,13 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
         ->capture_default_str();
     app.add_option("--burst", intake.burst, "burst allowed above --max-rate")
         ->capture_default_str();
-    app.add_option("--max-future", intake.max_future_s, "seconds a timestamp may be ahead")
+    app.add_option("--max-future", intake.max_future_s,
+                   "seconds ahead beyond which a timestamp counts as clock skew")
         ->capture_default_str();
-    app.add_option("--max-age", intake.max_age_s, "seconds a timestamp may be behind")
+    app.add_option("--max-age", intake.max_age_s, "seconds a timestamp may be behind or ahead")
+        ->capture_default_str();
+    app.add_option("--reweigh-interval", c.tracker.reweigh_interval_s,
+                   "local: re-weigh stored evaluations at most this often (s; 0: never)")
         ->capture_default_str();
     app.add_option("--publish-hz", c.publish_hz, "estimates per problem per second, at most")
         ->check(CLI::PositiveNumber)

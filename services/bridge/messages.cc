@@ -25,6 +25,7 @@ std::int8_t reason_code(arrivals::Reason reason) {
     case arrivals::Reason::NEW_TASK:
         return task_distribution_t::REASON_NEW_TASK;
     case arrivals::Reason::DRIFT:
+    case arrivals::Reason::REWEIGH: // the estimate moved; no message of its own
         return task_distribution_t::REASON_DRIFT;
     }
     return task_distribution_t::REASON_NONE;

@@ -9,6 +9,7 @@
 #include "envdesign/design_request_t.hpp"
 #include "pddl/parse_error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -49,6 +50,20 @@ void LocalRedesigns::start(std::int64_t request_id, const arrivals::Request &req
     ready_.notify_one();
 }
 
+void LocalRedesigns::reweigh(std::int64_t request_id, const arrivals::Request &request) {
+    {
+        std::lock_guard lock(mutex_);
+        auto queued = std::find_if(jobs_.begin(), jobs_.end(), [&](const Job &j) {
+            return j.reweigh && j.request.problem_id == request.problem_id;
+        });
+        if (queued != jobs_.end())
+            *queued = {request_id, request, true};
+        else
+            jobs_.push_back({request_id, request, true});
+    }
+    ready_.notify_one();
+}
+
 void LocalRedesigns::run() {
     while (true) {
         Job job;
@@ -60,8 +75,43 @@ void LocalRedesigns::run() {
             job = std::move(jobs_.front());
             jobs_.pop_front();
         }
-        redesign(job);
+        if (job.reweigh)
+            reweigh(job);
+        else
+            redesign(job);
     }
+}
+
+void LocalRedesigns::reweigh(const Job &job) {
+    const std::string &id = job.request.problem_id;
+    arrivals::Redesigner &r = *redesigners_.at(id);
+    Answer answer{id, job.request_id, std::nullopt, {}, true, false};
+    try {
+        if (auto out = r.reweigh(job.request.estimate)) {
+            answer.reference = r.distribution();
+            answer.changed = out->change.changed;
+            answer.design = {out->change.after_names, out->change.objective_after,
+                             "re-weighted: " + out->change.explanation, job.request_id};
+            if (answer.changed) {
+                envdesign::design_result_t message =
+                    cluster::result_message(r.problem(), out->result, {});
+                message.change = answer.design.last_change;
+                message.utime = bus::now_utime();
+                message.request_id = job.request_id;
+                message.sender = message.client = instance_;
+                bus_.publish(bus::RESULT, message);
+                bus_.log().info("request {} | {}: re-weighted: {} (0 planner runs, {} "
+                                "configurations from the store, {:.3f} ms)",
+                                bus::request_name(instance_, job.request_id), id,
+                                out->change.explanation, out->change.stored_answers,
+                                out->change.seconds * 1e3);
+            }
+        }
+    } catch (const std::exception &e) { // the design in force stays; the drift path retries
+        bus_.log().error("request {} | {}: re-weighting failed: {}",
+                         bus::request_name(instance_, job.request_id), id, e.what());
+    }
+    answered_(std::move(answer));
 }
 
 void LocalRedesigns::redesign(const Job &job) {

@@ -34,6 +34,10 @@ struct Answer {
     // failed), the old one stays.
     std::optional<arrivals::Distribution> reference;
     DesignInForce design;
+    // A re-weighting's answer (LocalRedesigns::reweigh): `reference` set when it proved its
+    // design optimal, unset when it needs planners; `changed`: the design differs.
+    bool reweigh = false;
+    bool changed = false;
 };
 using Answered = std::function<void(Answer)>;
 
@@ -55,14 +59,20 @@ public:
     ~LocalRedesigns() override; // finishes the running redesign, drops the queued ones
 
     void start(std::int64_t request_id, const arrivals::Request &request) override;
+    // Re-weighs stored evaluations for `request.estimate` (Redesigner::reweigh) after the
+    // jobs queued before it; replaces a re-weighting of the same problem still queued (only
+    // the latest estimate matters). Publishes a result only when the design changes.
+    void reweigh(std::int64_t request_id, const arrivals::Request &request);
 
 private:
     struct Job {
         std::int64_t request_id;
         arrivals::Request request;
+        bool reweigh = false;
     };
     void run();
     void redesign(const Job &job);
+    void reweigh(const Job &job);
 
     bus::Bus &bus_;
     std::string instance_;

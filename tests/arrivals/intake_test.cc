@@ -48,8 +48,9 @@ TEST(Intake, EachBadKindIsCounted) {
     EXPECT_EQ(c.count(Verdict::ACCEPTED), 0);
 }
 
-// Absurd timestamps: zero, negative, the extremes of int64, 301 s ahead, 8 days old.
-// 299 s ahead and 6 days old are fine (defaults: 300 s, 7 days).
+// Absurd timestamps: zero, negative, the extremes of int64, 8 days ahead, 8 days old.
+// 299 s ahead and 6 days old are fine (defaults: 300 s, 7 days); 301 s ahead is a skewed
+// clock (Intake.SkewedClocksAreCountedNotRejected).
 TEST(Intake, AbsurdTimestamps) {
     ArrivalIntake intake({});
     int64_t seq = 1;
@@ -62,13 +63,32 @@ TEST(Intake, AbsurdTimestamps) {
                                       -1,
                                       INT64_MIN,
                                       INT64_MAX,
-                                      NOW_UTIME + 301'000'000,
+                                      NOW_UTIME + int64_t{8} * 86400 * 1'000'000,
                                       NOW_UTIME - int64_t{8} * 86400 * 1'000'000};
     for (int64_t bad : absurd)
         EXPECT_EQ(at(bad), Verdict::BAD_TIMESTAMP) << bad;
     EXPECT_EQ(at(NOW_UTIME + 299'000'000), Verdict::ACCEPTED);
     EXPECT_EQ(at(NOW_UTIME - int64_t{6} * 86400 * 1'000'000), Verdict::ACCEPTED);
     EXPECT_EQ(intake.counters().count(Verdict::BAD_TIMESTAMP), 6);
+}
+
+// A publisher whose clock runs 10 minutes ahead (beyond --max-future 300 s): its arrivals
+// are taken (the estimate uses their order, not their stamps) and counted as skewed.
+// The old intake rejected them as bad_timestamp, so the estimate silently stopped.
+TEST(Intake, SkewedClocksAreCountedNotRejected) {
+    ArrivalIntake intake({});
+    const int64_t ten_minutes = 600'000'000;
+    for (int64_t s = 1; s <= 3; ++s) {
+        Arrival a = arrival("a", s);
+        a.utime = NOW_UTIME + ten_minutes;
+        EXPECT_EQ(intake.check(a, true, 0, NOW_UTIME), Verdict::ACCEPTED);
+        EXPECT_TRUE(intake.last_skewed());
+    }
+    EXPECT_EQ(intake.check(arrival("a", 4), true, 0, NOW_UTIME), Verdict::ACCEPTED);
+    EXPECT_FALSE(intake.last_skewed());
+    EXPECT_EQ(intake.counters().clock_skewed, 3);
+    EXPECT_NEAR(intake.counters().last_skew_s, 600, 1e-6);
+    EXPECT_EQ(intake.counters().count(Verdict::BAD_TIMESTAMP), 0);
 }
 
 // 1, 2, 2 (duplicate), 1 (duplicate? no: a restart), 2, 5 (gap of 2: 3 and 4 lost), 4.
