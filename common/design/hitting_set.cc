@@ -28,7 +28,7 @@ HittingSetMaster::HittingSetMaster(const DesignProblem &problem, const SupersetB
     constant_ = objective_lower_bound(problem, 0.0, root_.settled, root_.robot_bounds);
 }
 
-double HittingSetMaster::margin(double best) { return 1e-5 * std::max(1.0, std::abs(best)); }
+double HittingSetMaster::margin(double best) { return std::max(1e-4, 1e-5 * std::abs(best)); }
 
 // The IE term of `task`, above its least, when the human's optimum is at most `human_optimum`.
 double HittingSetMaster::level_value(int task, double human_optimum) const {
@@ -70,31 +70,6 @@ std::vector<std::vector<HittingSetMaster::Level>> HittingSetMaster::levels() con
     return out;
 }
 
-double HittingSetMaster::relaxed(const Configuration &design) const {
-    double cost = 0;
-    for (int m : design)
-        cost += problem_.modifications[m].cost;
-    double total = constant_ + problem_.weights.beta * cost;
-    for (const auto &task_levels : levels()) {
-        // The human's optimum is at most the cost of the first level with a plan unbroken.
-        for (std::size_t j = 0; j < task_levels.size(); ++j) {
-            const Level &level = task_levels[j];
-            bool broken =
-                level.breakable &&
-                std::all_of(level.breakers.begin(), level.breakers.end(), [&](const auto *b) {
-                    return std::any_of(b->begin(), b->end(),
-                                       [&](int m) { return contains(design, m); });
-                });
-            if (broken)
-                continue;
-            for (std::size_t k = j; k < task_levels.size(); ++k)
-                total += task_levels[k].saving;
-            break;
-        }
-    }
-    return total;
-}
-
 HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &excluded, double cutoff,
                                                  const Deadline &deadline) const {
     const ObjectiveWeights &w = problem_.weights;
@@ -102,7 +77,12 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
     Model model(Cbc_newModel());
     Cbc_Model *m = model.get();
     Cbc_setLogLevel(m, 0);
+    // Tight tolerances: CBC's defaults accept an incumbent 1e-5 (absolute) above the optimum,
+    // as wide as the margin on small objectives.
     Cbc_setParameter(m, "integerTolerance", "1e-9");
+    Cbc_setParameter(m, "increment", "1e-10");
+    Cbc_setAllowableGap(m, 0.0);
+    Cbc_setAllowableFractionGap(m, 0.0);
     if (deadline.limited())
         Cbc_setMaximumSeconds(m, deadline.remaining_seconds());
     for (int i = 0; i < n; ++i)
@@ -174,14 +154,21 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
         answer.status = Answer::NONE;
         return answer;
     }
-    if (!Cbc_isProvenOptimal(m) || !Cbc_bestSolution(m))
+    if (!Cbc_isProvenOptimal(m))
         return answer; // FAILED: a limit, or the solver gave up
+    // NONE only on the solver's proven lower bound, never on its incumbent alone.
+    double lower = Cbc_getBestPossibleObjValue(m) + offset;
+    if (!Cbc_bestSolution(m) || Cbc_getObjValue(m) + offset > cutoff) {
+        if (lower > cutoff)
+            answer.status = Answer::NONE;
+        return answer; // else FAILED: the two disagree within the solver's tolerance
+    }
     const double *x = Cbc_getColSolution(m);
     for (int i = 0; i < n; ++i)
         if (x[i] > 0.5)
             answer.design.push_back(i);
-    answer.bound = Cbc_getObjValue(m) + offset;
-    answer.status = answer.bound > cutoff ? Answer::NONE : Answer::FOUND;
+    answer.bound = std::min(lower, Cbc_getObjValue(m) + offset);
+    answer.status = Answer::FOUND;
     return answer;
 }
 

@@ -154,6 +154,9 @@ bool DesignLearner::prove_by_hitting_sets() {
         auto answer =
             master.least(considered_, best + HittingSetMaster::margin(best), options_.deadline);
         if (answer.status == HittingSetMaster::Answer::NONE) {
+            // A design a limit stopped earlier (a probe) is in no cone: it was picked again,
+            // or its relaxed objective is above the best. Either way the proof holds.
+            limit_seen_ = false;
             lower_bound_ = best;
             return true;
         }
