@@ -8,19 +8,11 @@
 namespace envdesign::design {
 namespace {
 
-// A walk over well-formed JSON that records positions; values are skipped, not decoded.
-class PositionScanner {
-public:
-    PositionScanner(const std::string &text, const std::string &file,
-                    std::map<std::string, pddl::Location> &out)
-        : text_(text), file_(file), out_(out) {}
+// Line and column (UTF-8 characters, not bytes) over a walk through JSON text.
+class JsonCursor {
+protected:
+    JsonCursor(const std::string &text, const std::string &file) : text_(text), file_(file) {}
 
-    void scan() {
-        skip_space();
-        value("");
-    }
-
-private:
     bool at_end() const { return pos_ >= text_.size(); }
     char peek() const { return at_end() ? '\0' : text_[pos_]; }
     pddl::Location here() const { return {file_, line_, column_}; }
@@ -30,11 +22,31 @@ private:
             ++line_;
             column_ = 1;
         } else if ((static_cast<unsigned char>(text_[pos_]) & 0xC0) != 0x80) {
-            ++column_; // count UTF-8 characters, not bytes
+            ++column_;
         }
         ++pos_;
     }
 
+    const std::string &text_;
+    std::string file_;
+    std::size_t pos_ = 0;
+    int line_ = 1;
+    int column_ = 1;
+};
+
+// A walk over well-formed JSON that records positions; values are skipped, not decoded.
+class PositionScanner : JsonCursor {
+public:
+    PositionScanner(const std::string &text, const std::string &file,
+                    std::map<std::string, pddl::Location> &out)
+        : JsonCursor(text, file), out_(out) {}
+
+    void scan() {
+        skip_space();
+        value("");
+    }
+
+private:
     void skip_space() {
         while (!at_end() && std::isspace(static_cast<unsigned char>(peek())))
             advance();
@@ -103,18 +115,13 @@ private:
             advance();
     }
 
-    const std::string &text_;
-    std::string file_;
     std::map<std::string, pddl::Location> &out_;
-    std::size_t pos_ = 0;
-    int line_ = 1;
-    int column_ = 1;
 };
 
-// Tracks line and column (UTF-8 characters) over a linear walk, as PositionScanner does.
-class LimitScanner {
+// A linear walk that checks nesting depth and number range before any parser runs.
+class LimitScanner : JsonCursor {
 public:
-    LimitScanner(const std::string &text, const std::string &file) : text_(text), file_(file) {}
+    LimitScanner(const std::string &text, const std::string &file) : JsonCursor(text, file) {}
 
     void scan() {
         int depth = 0;
@@ -139,18 +146,6 @@ public:
     }
 
 private:
-    pddl::Location here() const { return {file_, line_, column_}; }
-
-    void advance() {
-        if (text_[pos_] == '\n') {
-            ++line_;
-            column_ = 1;
-        } else if ((static_cast<unsigned char>(text_[pos_]) & 0xC0) != 0x80) {
-            ++column_;
-        }
-        ++pos_;
-    }
-
     void skip_string() {
         advance(); // '"'
         while (pos_ < text_.size() && text_[pos_] != '"') {
@@ -176,12 +171,6 @@ private:
             throw pddl::ParseError(start, "the number " + token.substr(0, 40) +
                                               " is beyond the range of a double");
     }
-
-    const std::string &text_;
-    std::string file_;
-    std::size_t pos_ = 0;
-    int line_ = 1;
-    int column_ = 1;
 };
 
 } // namespace
