@@ -7,6 +7,8 @@
 #include "bus/log.h"
 #include "envdesign/cancel_t.hpp"
 
+#include "bus_test_support.h"
+
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
 
@@ -134,11 +136,6 @@ TEST(Auth, TheReplayTableIsBoundedAndForgetsNoReplay) {
     for (const auto &wire : captured) // the forgotten ones included
         EXPECT_EQ(check(verifier, wire, guard), Drop::REPLAYED);
     EXPECT_FALSE(check(verifier, senders[0]->sign(CH, "y", 1), guard)) << "still heard later";
-}
-
-std::shared_ptr<spdlog::logger> quiet() {
-    return std::make_shared<spdlog::logger>("test",
-                                            std::make_shared<spdlog::sinks::null_sink_mt>());
 }
 
 std::string udp_url() {

@@ -7,6 +7,8 @@
 #include "envdesign/job_t.hpp"
 #include "envdesign/planner_heartbeat_t.hpp"
 
+#include "bus_test_support.h"
+
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
 
@@ -14,16 +16,6 @@
 
 namespace envdesign::bus {
 namespace {
-
-std::shared_ptr<spdlog::logger> quiet() {
-    return std::make_shared<spdlog::logger>("test",
-                                            std::make_shared<spdlog::sinks::null_sink_mt>());
-}
-
-void drain(Bus &bus) {
-    while (bus.handle(std::chrono::milliseconds(0)) > 0) {
-    }
-}
 
 envdesign::planner_heartbeat_t beat() {
     envdesign::planner_heartbeat_t b{};

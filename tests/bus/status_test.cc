@@ -6,6 +6,8 @@
 #include "bus/codec.h"
 #include "bus/status.h"
 
+#include "bus_test_support.h"
+
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
 
@@ -13,16 +15,6 @@
 
 namespace envdesign::bus {
 namespace {
-
-std::shared_ptr<spdlog::logger> quiet() {
-    return std::make_shared<spdlog::logger>("test",
-                                            std::make_shared<spdlog::sinks::null_sink_mt>());
-}
-
-void drain(Bus &bus) {
-    while (bus.handle(std::chrono::milliseconds(0)) > 0) {
-    }
-}
 
 TEST(Status, FirstAtOnceThenOnceAPeriod) {
     Bus bus("memq://", quiet());
