@@ -51,6 +51,9 @@ struct DesignSearchOptions {
     // Witness search: try the hitting-set phase (hitting_set.h) before the best-first
     // search; off only to test or measure the best-first search alone.
     bool hitting_sets = true;
+    // The N best designs, best first, in ranks_before order (DesignResult::ranking); 0 or 1:
+    // only the best. The searches then prune against the N-th best found so far.
+    int ranking = 0;
 };
 
 struct SearchProgress {
@@ -87,6 +90,9 @@ struct DesignResult {
     bool limit_reached = false;              // the deadline stopped the search
     std::optional<EvaluatedDesign> best;     // unset only if not even {} was evaluated
     std::optional<EvaluatedDesign> baseline; // the empty design
+    // The best designs found, best first (ranks_before), at most max(1, options.ranking);
+    // proven the true best ones when `optimal`.
+    std::vector<RankedDesign> ranking;
     // When a limit stopped the search: the best objective minus the least bound still open
     // (an optimal design is no better than best - gap).
     std::optional<double> gap;
