@@ -126,7 +126,7 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
     command
         .add_option("--ranking", flags.ranking,
                     "list the N best designs, best first (0: the best alone)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(CLI::Range(0, 100000));
     command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
         ->check(CLI::IsMember({"none", "relevant"}));
     command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
