@@ -22,6 +22,8 @@
 // (relevance.h); the same bounds apply.
 // The result is "optimal" only when every configuration was evaluated or skipped by these
 // bounds, no planner hit the time limit, and the pruning left no configuration out.
+// With options.ranking = N the result also lists the N best designs, and every bound above
+// compares with the N-th best objective found instead of the best (ranking.h).
 
 #include "design/design_problem.h"
 #include "design/evaluator.h"
