@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <sstream>
 
 namespace envdesign::design {
 namespace {
@@ -73,6 +74,7 @@ private:
             fail("", "the design problem has no task");
         std::set<std::string> names;
         double total = 0;
+        bool written = false; // a task gives its probability (else all weigh the same)
         for (int i = 0; i < m_.task_size(); ++i) {
             const auto &t = m_.task(i);
             std::string at = "task[" + std::to_string(i) + "]";
@@ -83,6 +85,7 @@ private:
             DesignTask task;
             task.name = t.name();
             task.probability = t.has_probability() ? t.probability() : 1.0;
+            written = written || t.has_probability();
             if (!(task.probability >= 0) || !std::isfinite(task.probability))
                 fail(at + ".probability",
                      "the probability of task '" + t.name() + "' must be a non-negative number");
@@ -105,6 +108,19 @@ private:
             fail("task[0].probability", "the task probabilities sum to zero");
         for (auto &task : problem_.tasks)
             task.probability /= total;
+        if (written && std::abs(total - 1) > 1e-9)
+            warn_normalised(total);
+    }
+
+    // Probabilities that do not sum to 1 are most often a typo: say what was made of them.
+    void warn_normalised(double total) {
+        std::ostringstream text;
+        text << spec_.at("task[0].probability").to_string() << ": warning: the task "
+             << "probabilities sum to " << total << ", not 1; they were normalised to";
+        for (const auto &task : problem_.tasks)
+            text << (&task == &problem_.tasks.front() ? " " : ", ") << task.name << " "
+                 << task.probability;
+        problem_.warnings.push_back(text.str());
     }
 
     void load_weights() {

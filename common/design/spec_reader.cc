@@ -132,6 +132,29 @@ pddl::Location location_of_byte(const std::string &text, std::size_t byte,
     return where;
 }
 
+// protobuf's JSON parser names the place as "(task[1].probability): invalid value ..." or
+// "(modification[0]) colour: Cannot find field."; older versions as "colour: Cannot find
+// field." alone. The error points at that key (the first one so named for the last form).
+pddl::ParseError json_message_error(const std::string &message, const JsonLocations &locations) {
+    const std::string unknown = ": Cannot find field.";
+    if (message.empty() || message[0] != '(' || message.find(')') == std::string::npos) {
+        auto colon = message.find(':');
+        std::string key = colon == std::string::npos ? "" : message.substr(0, colon);
+        return pddl::ParseError(locations.locate_key(key), message);
+    }
+    auto close = message.find(')');
+    std::string path = snake_case(message.substr(1, close - 1));
+    std::string rest = message.substr(close + 1);
+    rest.erase(0, rest.find_first_not_of(" :"));
+    if (rest.size() > unknown.size() &&
+        rest.compare(rest.size() - unknown.size(), unknown.size(), unknown) == 0) {
+        std::string key = snake_case(rest.substr(0, rest.size() - unknown.size()));
+        std::string field = path.empty() ? key : path + "." + key;
+        return pddl::ParseError(locations.locate(field), "unknown field '" + field + "'");
+    }
+    return pddl::ParseError(locations.locate(path), (path.empty() ? "" : path + ": ") + rest);
+}
+
 SpecFile read_json(const std::string &text, const std::string &path) {
     check_json_limits(text, path); // first: the readers below recurse or throw without a line
     try {
@@ -149,12 +172,8 @@ SpecFile read_json(const std::string &text, const std::string &path) {
     auto locations = std::make_unique<JsonLocations>(path, index_json_positions(text, path));
     SpecFile spec{path, {}, nullptr};
     auto status = gp::util::JsonStringToMessage(text, &spec.message);
-    if (!status.ok()) {
-        std::string message(status.message());
-        auto colon = message.find(':');
-        std::string key = colon == std::string::npos ? "" : message.substr(0, colon);
-        throw pddl::ParseError(locations->locate_key(key), message);
-    }
+    if (!status.ok())
+        throw json_message_error(std::string(status.message()), *locations);
     spec.locations = std::move(locations);
     return spec;
 }
