@@ -2,6 +2,7 @@
 
 #include <cstring>
 #include <iostream>
+#include <regex>
 
 namespace envdesign::cli {
 
@@ -36,8 +37,21 @@ void print_error_json(int exit_code, const std::string &message,
               << std::endl;
 }
 
+std::optional<std::pair<pddl::Location, std::string>> split_file_error(const std::string &text) {
+    static const std::regex form(R"(^([^\n]+):([0-9]+):([0-9]+): error: )");
+    std::smatch m;
+    if (!std::regex_search(text, m, form))
+        return std::nullopt;
+    pddl::Location where{m[1].str(), std::stoi(m[2].str()), std::stoi(m[3].str())};
+    return std::make_pair(where, text.substr(m.length(0)));
+}
+
 int report_failure(bool json, int exit_code, const std::string &message,
                    const std::optional<pddl::Location> &where) {
+    // A message that arrived as text (from the coordinator) still names its place.
+    if (!where)
+        if (auto split = split_file_error(message))
+            return report_failure(json, exit_code, split->second, split->first);
     if (where)
         std::cerr << pddl::ParseError(*where, message).what() << std::endl;
     else

@@ -13,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace envdesign::cli {
 
@@ -35,12 +36,16 @@ bool json_requested(int argc, const char *const *argv);
 nlohmann::json error_json(int exit_code, const std::string &message,
                           const std::optional<pddl::Location> &where = std::nullopt);
 
+// "FILE:LINE:COL: error: MESSAGE" (as the coordinator sends bad input back) -> the place and
+// MESSAGE; nullopt for text of another form.
+std::optional<std::pair<pddl::Location, std::string>> split_file_error(const std::string &text);
+
 // Prints error_json(...) on stdout, one line.
 void print_error_json(int exit_code, const std::string &message,
                       const std::optional<pddl::Location> &where = std::nullopt);
 
-// Prints the failure on stderr ("WHERE: error: MESSAGE" when `where` is given) and, with
-// `json`, error_json(...) on stdout. Returns `exit_code`.
+// Prints the failure on stderr ("WHERE: error: MESSAGE" when `where` is given, or when
+// `message` has that form) and, with `json`, error_json(...) on stdout. Returns `exit_code`.
 int report_failure(bool json, int exit_code, const std::string &message,
                    const std::optional<pddl::Location> &where = std::nullopt);
 

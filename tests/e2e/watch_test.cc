@@ -109,6 +109,28 @@ TEST(Watch, StopsAfterSecondsAndShowsStatusOnRequest) {
     std::filesystem::remove_all(dir);
 }
 
+// The same JSON error object for bad input found by the coordinator as for bad input found
+// in-process: `--json` failures are never only text, whichever path found them.
+TEST(JsonErrors, BadInputThroughTheCoordinatorNamesFileLineAndColumn) {
+    LocalCluster cluster(1);
+    const std::string spec = source("tests/data/design/bad/unknown-action.textproto");
+    int exit_code = -1;
+    std::string out = command_output(binary("envdesign") + " design " + spec +
+                                         " --json --connect '" + cluster.url() + "' 2>/dev/null",
+                                     &exit_code);
+    EXPECT_EQ(exit_code, 2);
+    auto error = nlohmann::json::parse(out, nullptr, false);
+    ASSERT_FALSE(error.is_discarded()) << out;
+    // Line 6: `  edit { add_precondition { action: "fly" ...`, "fly" at column 43 (the
+    // in-process answer, tests/cli).
+    EXPECT_EQ(error["exit_code"], 2);
+    EXPECT_EQ(error["line"], 6);
+    EXPECT_EQ(error["column"], 43);
+    EXPECT_NE(error["file"].get<std::string>().find("unknown-action.textproto"), std::string::npos)
+        << error;
+    EXPECT_EQ(error["error"].get<std::string>().rfind("unknown action 'fly'", 0), 0u) << error;
+}
+
 TEST(Watch, ABadUrlIsExitTwoWithAJsonError) {
     auto dir = std::filesystem::temp_directory_path() /
                ("envdesign-watch-url-" + std::to_string(getpid()));

@@ -155,7 +155,9 @@ WatchReport watch_bus(const std::string &lcm_url, const WatchOptions &options,
     while (options.seconds <= 0 || Clock::now() < end) {
         if (options.stop_requested && options.stop_requested())
             break;
-        if (on.handle(std::chrono::milliseconds(50)) < 0) {
+        // A signal (the stop asked for) interrupts LCM's wait: that is no failure.
+        if (on.handle(std::chrono::milliseconds(50)) < 0 &&
+            !(options.stop_requested && options.stop_requested())) {
             report.exit_code = 1;
             report.error =
                 "LCM failed while watching " + (lcm_url.empty() ? default_url() : lcm_url);
