@@ -124,8 +124,12 @@ INSTANTIATE_TEST_SUITE_P(
         JsonSpecError{"unknown-field.json", 5, 34, "unknown field 'modification[0].colour'"},
         // line 6: `     "edit": [{"model": "OBSERVERS", ...`, the key "model" at column 16
         JsonSpecError{"bad-enum.json", 6, 16, "modification[0].edit[0].model: invalid value"},
-        // the edit object itself (two kinds in one edit), its "{" at column 15
-        JsonSpecError{"two-edit-kinds.json", 6, 15, "modification[0].edit[0]: invalid value"}));
+        // two kinds in one edit: the second, "remove_init", at column 53
+        JsonSpecError{"two-edit-kinds.json", 6, 53,
+                      "only one field of 'kind' may be given: "
+                      "'modification[0].edit[0].remove_init' is a second one"},
+        // line 5: `  "beta": 2, "alpha": 3`, the second "alpha" at column 14
+        JsonSpecError{"duplicate-key.json", 5, 14, "'alpha' is given twice"}));
 
 TEST(Warnings, ProbabilitiesThatDoNotSumToOneSaySoAndHowTheyWereNormalised) {
     const std::string spec = data("usability/probabilities-1.1.textproto");
