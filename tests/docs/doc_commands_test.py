@@ -35,8 +35,8 @@ ELSEWHERE = [
     ("export CYCLONEDDS_URI", "bridge_tests (the bridge and arrivals on DDS loopback)"),
     ("build/bin/envdesign-bridge", "bridge_tests (the bridge and arrivals on DDS loopback)"),
     ("build/bin/envdesign-arrivals", "bridge_tests (the bridge and arrivals on DDS loopback)"),
-    ("python3 -m venv", "e2e.PythonClient test_installed_package_runs_the_readme_example"),
-    ("/tmp/envdesign-venv/bin/pip install", "e2e.PythonClient "
+    ("python3 -m venv", "e2e.PythonClientInstalled"),
+    ("/tmp/envdesign-venv/bin/pip install", "e2e.PythonClientInstalled "
                                             "test_installed_package_runs_the_readme_example"),
     ("cmake --install", "e2e.InstalledClientLibrary (tests/e2e/install_test.sh)"),
     ("CC=clang CXX=clang++ cmake", "a second compiler's full build: not CI"),
