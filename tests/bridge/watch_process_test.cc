@@ -19,13 +19,26 @@ TEST(WatchBridge, PrintsTheDistributionEstimates) {
     auto bridge = start_bridge(dir, 79, 7779, {"--estimator", "window:100"});
     std::string out = dir + "/watch.out", text_out = dir + "/watch.txt";
     Process json_watch({"/bin/bash", "-c",
-                        "exec " + BIN + "/envdesign watch --json --seconds 60 --lcm-url '" +
+                        "exec " + BIN +
+                            "/envdesign watch --json --status --seconds 60 --lcm-url '" +
                             lcm_url(7779) + "' > " + out},
                        dir + "/watch.log");
     Process text_watch({"/bin/bash", "-c",
-                        "exec " + BIN + "/envdesign watch --seconds 60 --lcm-url '" +
+                        "exec " + BIN + "/envdesign watch --status --seconds 60 --lcm-url '" +
                             lcm_url(7779) + "' > " + text_out},
                        dir + "/watch-text.log");
+    // Both listen once they print the bridge's status (1/s), before any arrival is sent.
+    for (const auto &file : {out, text_out}) {
+        bool listening = false;
+        for (int i = 0; i < 400 && !listening; ++i) {
+            std::ifstream in(file);
+            std::stringstream all;
+            all << in.rdbuf();
+            listening = all.str().find("status") != std::string::npos;
+            std::this_thread::sleep_for(50ms);
+        }
+        ASSERT_TRUE(listening) << file << "\n" << bridge->output();
+    }
     std::string replay = write_replay(dir + "/mix.csv", "task", booth_mix(100, 9));
     publish(dir, replay, 79, {"--rate", "2000"});
     // The bridge publishes each estimate at once (--publish-hz 50) and once a second idle.

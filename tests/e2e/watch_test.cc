@@ -27,6 +27,19 @@ public:
         return {code, text.str()};
     }
     Process &process() { return process_; }
+    // True once it printed `text` (within `timeout_s`): e.g. a status line, so it listens.
+    bool printed(const std::string &text, double timeout_s = 20) {
+        auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+        while (std::chrono::steady_clock::now() < end) {
+            std::ifstream in(out_);
+            std::stringstream all;
+            all << in.rdbuf();
+            if (all.str().find(text) != std::string::npos)
+                return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        return false;
+    }
 
 private:
     std::filesystem::path out_;
@@ -49,10 +62,11 @@ TEST(Watch, PrintsTheProgressAndResultOfARequestAsTheyPass) {
     auto dir =
         std::filesystem::temp_directory_path() / ("envdesign-watch-" + std::to_string(getpid()));
     std::filesystem::create_directories(dir);
-    Watcher json(cluster.url(), dir, "json", "--json --seconds 30");
-    Watcher text(cluster.url(), dir, "text", "--seconds 30");
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500)); // both listening
-    ASSERT_TRUE(json.process().running()) << json.process().output();
+    // --status: the services' status (1/s) shows when each watcher listens.
+    Watcher json(cluster.url(), dir, "json", "--json --status --seconds 60");
+    Watcher text(cluster.url(), dir, "text", "--status --seconds 60");
+    ASSERT_TRUE(json.printed("\"kind\":\"status\"")) << json.process().output();
+    ASSERT_TRUE(text.printed("status coordinator")) << text.process().output();
     CliRun run(cluster.url(), source(RESTAURANT), dir, "design");
     nlohmann::json want = run.result();
     // Ctrl-C (SIGINT) ends a watch cleanly: exit 0, everything printed so far kept.
@@ -65,7 +79,8 @@ TEST(Watch, PrintsTheProgressAndResultOfARequestAsTheyPass) {
 
     std::vector<nlohmann::json> results, progress;
     for (const auto &line : json_lines(json_out))
-        (line["kind"] == "result" ? results : progress).push_back(line);
+        if (line["kind"] != "status")
+            (line["kind"] == "result" ? results : progress).push_back(line);
     ASSERT_EQ(results.size(), 1u) << json_out;
     const nlohmann::json &result = results[0];
     EXPECT_EQ(result["channel"], "ENVDESIGN_RESULT");
