@@ -118,6 +118,49 @@ def mirror(build):
     return work
 
 
+def spec_examples():
+    """[(where, suffix, text)]: the complete spec files shown in docs/spec-reference.md (the
+    fenced blocks that begin with robot_domain), to be designed as they are written."""
+    path = os.path.join(ROOT, "docs", "spec-reference.md")
+    found, block, start = [], None, 0
+    for number, line in enumerate(open(path).read().splitlines(), 1):
+        if line.startswith("```"):
+            if block is None:
+                block, start = [], number
+                continue
+            text = "\n".join(block) + "\n"
+            if text.startswith("robot_domain"):
+                found.append((f"docs/spec-reference.md:{start}", ".textproto", text))
+            elif text.startswith('{"robot_domain"'):
+                found.append((f"docs/spec-reference.md:{start}", ".json", text))
+            block = None
+        elif block is not None:
+            block.append(line)
+    return found
+
+
+def check_spec_examples(build):
+    """Each complete example of the spec reference, beside the restaurant's PDDL files: exit 0."""
+    failures = []
+    work = tempfile.mkdtemp(prefix="envdesign-spec-examples-")
+    for name in os.listdir(os.path.join(ROOT, "examples", "restaurant")):
+        if name.endswith(".pddl"):
+            os.symlink(os.path.join(ROOT, "examples", "restaurant", name), os.path.join(work, name))
+    examples = spec_examples()
+    for i, (where, suffix, text) in enumerate(examples):
+        spec = os.path.join(work, f"example-{i}{suffix}")
+        with open(spec, "w") as f:
+            f.write(text)
+        done = subprocess.run([os.path.join(build, "bin", "envdesign"), "design", spec, "--json"],
+                              capture_output=True, text=True, timeout=TIMEOUT_S)
+        print(f"spec      {where}: exit {done.returncode}")
+        if done.returncode != 0:
+            failures.append(f"{where}: the example spec does not design:\n{done.stderr}")
+    if len(examples) < 2:
+        failures.append("docs/spec-reference.md: the text and JSON examples were not found")
+    return failures
+
+
 def main(argv):
     build = argv[1]
     listing = "--list" in argv
@@ -149,6 +192,8 @@ def main(argv):
             if code != want:
                 failures.append(f"{where}: `{command}` exited {code}, not {want}\n{output[-2000:]}")
     print(f"{ran} commands run, {elsewhere} run elsewhere (listed above)")
+    if not listing:
+        failures += check_spec_examples(build)
     for failure in failures:
         print("FAIL " + failure, file=sys.stderr)
     if not listing and ran == 0:
