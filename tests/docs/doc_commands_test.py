@@ -8,7 +8,8 @@ a|b) are not commands. Every command either runs here, offline, in a scratch dir
 mirrors the repository (build/ is BUILD_DIR), with the exit code asserted (0 unless EXIT
 says otherwise), or is listed in ELSEWHERE with the test or CI step that runs it, or why it
 is a benchmark command that CI does not run. A command that is neither and does not run
-fails the test, so a new command in the docs is run from the day it is written.
+fails the test, so a new command in the docs is run from the day it is written. The complete
+spec files shown in docs/spec-reference.md (text and JSON) are designed as written too.
 
     python3 tests/docs/doc_commands_test.py build            # --list: print the table only
 """
