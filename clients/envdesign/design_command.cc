@@ -93,10 +93,13 @@ int run_design_remote(const DesignFlags &flags) {
     options.key_file = flags.key_file;
     options.on_progress = client::stderr_progress();
     options.stop_requested = [] { return interrupted.load(); };
+    std::vector<std::string> warnings = remote_spec_warnings(flags.spec);
+    print_warnings(warnings);
     client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
     if (result.status == "error")
         throw CommandError(result.exit_code, result.error);
-    std::cout << (flags.json ? result.json + "\n" : result.text) << std::flush;
+    std::cout << (flags.json ? with_warnings(result.json, warnings) + "\n" : result.text)
+              << std::flush;
     if (result.exit_code == 4)
         spdlog::warn("{}; the design is the best found",
                      interrupted ? "interrupted" : "the time limit stopped the search");

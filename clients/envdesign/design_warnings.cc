@@ -1,6 +1,9 @@
 #include "design_warnings.h"
 
+#include "design/design_spec.h"
 #include "design/unsolvable_tasks.h"
+
+#include <nlohmann/json.hpp>
 
 #include <iostream>
 
@@ -33,6 +36,23 @@ std::vector<std::string> unsolvable_task_warnings(const design::DesignProblem &p
         lines.push_back("task '" + problem.tasks[u.task].name +
                         "' has infinite IE in the unmodified models: " + reason_text(u.reason));
     return lines;
+}
+
+std::vector<std::string> remote_spec_warnings(const std::string &spec_path) {
+    try {
+        if (auto warning = design::probability_warning(design::read_spec_file(spec_path)))
+            return {*warning};
+    } catch (const pddl::ParseError &) { // the coordinator's answer names it
+    }
+    return {};
+}
+
+std::string with_warnings(const std::string &json_text, const std::vector<std::string> &warnings) {
+    if (warnings.empty())
+        return json_text;
+    nlohmann::json out = nlohmann::json::parse(json_text);
+    out["warnings"] = warnings;
+    return out.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 void print_warnings(const std::vector<std::string> &warnings) {

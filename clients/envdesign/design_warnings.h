@@ -20,6 +20,13 @@ std::vector<std::string> unsolvable_task_warnings(const design::DesignProblem &p
                                                   design::PlanCache &planner,
                                                   const design::Deadline &deadline);
 
+// With --connect: the warnings of the spec file read here (the coordinator reads it again
+// and reports bad input; a spec that does not read gives none here).
+std::vector<std::string> remote_spec_warnings(const std::string &spec_path);
+
+// `json_text` (a JSON result object) with "warnings": `warnings` when there are any.
+std::string with_warnings(const std::string &json_text, const std::vector<std::string> &warnings);
+
 // Prints each on stderr, prefixed "warning: " unless it already names its place.
 void print_warnings(const std::vector<std::string> &warnings);
 

@@ -74,7 +74,6 @@ private:
             fail("", "the design problem has no task");
         std::set<std::string> names;
         double total = 0;
-        bool written = false; // a task gives its probability (else all weigh the same)
         for (int i = 0; i < m_.task_size(); ++i) {
             const auto &t = m_.task(i);
             std::string at = "task[" + std::to_string(i) + "]";
@@ -85,7 +84,6 @@ private:
             DesignTask task;
             task.name = t.name();
             task.probability = t.has_probability() ? t.probability() : 1.0;
-            written = written || t.has_probability();
             if (!(task.probability >= 0) || !std::isfinite(task.probability))
                 fail(at + ".probability",
                      "the probability of task '" + t.name() + "' must be a non-negative number");
@@ -108,19 +106,8 @@ private:
             fail("task[0].probability", "the task probabilities sum to zero");
         for (auto &task : problem_.tasks)
             task.probability /= total;
-        if (written && std::abs(total - 1) > 1e-9)
-            warn_normalised(total);
-    }
-
-    // Probabilities that do not sum to 1 are most often a typo: say what was made of them.
-    void warn_normalised(double total) {
-        std::ostringstream text;
-        text << spec_.at("task[0].probability").to_string() << ": warning: the task "
-             << "probabilities sum to " << total << ", not 1; they were normalised to";
-        for (const auto &task : problem_.tasks)
-            text << (&task == &problem_.tasks.front() ? " " : ", ") << task.name << " "
-                 << task.probability;
-        problem_.warnings.push_back(text.str());
+        if (auto warning = probability_warning(spec_))
+            problem_.warnings.push_back(*warning);
     }
 
     void load_weights() {
@@ -175,6 +162,31 @@ private:
 };
 
 } // namespace
+
+// Probabilities that do not sum to 1 are most often a typo: say what was made of them.
+std::optional<std::string> probability_warning(const SpecFile &spec) {
+    double total = 0;
+    bool written = false; // a task gives its probability (else all weigh the same, silently)
+    for (const auto &t : spec.message.task()) {
+        double p = t.has_probability() ? t.probability() : 1.0;
+        if (!(p >= 0) || !std::isfinite(p))
+            return std::nullopt; // bad input, not a warning
+        total += p;
+        written = written || t.has_probability();
+    }
+    if (!written || !(total > 0) || std::abs(total - 1) <= 1e-9)
+        return std::nullopt;
+    std::ostringstream text;
+    text << spec.at("task[0].probability").to_string() << ": warning: the task "
+         << "probabilities sum to " << total << ", not 1; they were normalised to";
+    const char *separator = " ";
+    for (const auto &t : spec.message.task()) {
+        text << separator << t.name() << " "
+             << (t.has_probability() ? t.probability() : 1.0) / total;
+        separator = ", ";
+    }
+    return text.str();
+}
 
 DesignProblem load_design_problem(const SpecFile &spec) { return Loader(spec).load(); }
 

@@ -146,6 +146,26 @@ TEST(JsonErrors, BadInputThroughTheCoordinatorNamesFileLineAndColumn) {
     EXPECT_EQ(error["error"].get<std::string>().rfind("unknown action 'fly'", 0), 0u) << error;
 }
 
+// Probabilities that do not sum to 1 warn with --connect as in-process: the same line.
+TEST(Warnings, ProbabilitiesWarnThroughTheCoordinatorToo) {
+    LocalCluster cluster(1);
+    const std::string spec = source("tests/data/usability/probabilities-1.1.textproto");
+    int remote_code = -1, local_code = -1;
+    auto remote = nlohmann::json::parse(command_output(binary("envdesign") + " design " + spec +
+                                                           " --json --connect '" + cluster.url() +
+                                                           "' 2>/dev/null",
+                                                       &remote_code));
+    auto local = nlohmann::json::parse(command_output(
+        binary("envdesign") + " design " + spec + " --json 2>/dev/null", &local_code));
+    EXPECT_EQ(remote_code, 0);
+    EXPECT_EQ(local_code, 0);
+    ASSERT_EQ(remote["warnings"].size(), 1u) << remote;
+    EXPECT_EQ(remote["warnings"], local["warnings"]);
+    EXPECT_NE(remote["warnings"][0].get<std::string>().find("sum to 1.1, not 1"),
+              std::string::npos);
+    EXPECT_EQ(remote["objective"], local["objective"]);
+}
+
 TEST(Watch, ABadUrlIsExitTwoWithAJsonError) {
     auto dir = std::filesystem::temp_directory_path() /
                ("envdesign-watch-url-" + std::to_string(getpid()));
