@@ -11,10 +11,6 @@
 
 namespace envdesign::bridge {
 
-// ENVDESIGN_TASK_DISTRIBUTION: estimates; ENVDESIGN_REEVALUATE: requests (same type).
-inline constexpr const char *TASK_DISTRIBUTION = "ENVDESIGN_TASK_DISTRIBUTION";
-inline constexpr const char *REEVALUATE = "ENVDESIGN_REEVALUATE";
-
 // The design in force for a problem, as the bridge last heard it.
 struct DesignInForce {
     std::vector<std::string> design; // modification names
