@@ -67,7 +67,7 @@ TEST_F(ServiceConfig, ALineWithoutEqualsOrAnUnclosedQuoteExitsTwoNamingTheColumn
     std::string missing = write("missing.conf", "max-requests 4\n");
     Outcome r = check("envdesign-coordinator", missing);
     EXPECT_EQ(r.code, 2);
-    EXPECT_NE(r.output.find(missing + ":1:13: error: expected '=' after 'max-requests'"),
+    EXPECT_NE(r.output.find(missing + ":1:14: error: expected '=' after 'max-requests'"),
               std::string::npos)
         << r.output;
     std::string quote = write("quote.conf", "log-level = warn\nname = \"coordinator/a\n");
