@@ -102,16 +102,22 @@ public:
         queue_.push(std::move(a));
         bridge_.pump(0);
     }
-    // Handles messages and ticks until `results` holds `count` (the local redesigner answers
-    // on its own thread); the clock moves 0.2 s a round so that rate limits open.
+    // Handles messages and ticks until `results` holds `count` and the bridge has taken as
+    // many answers (the local redesigner publishes on its own thread, then answers the
+    // bridge); the clock moves 0.2 s a round so that rate limits open.
     bool wait_results(std::size_t count) {
-        for (int round = 0; round < 3000 && results.size() < count; ++round) {
+        auto done = [&] {
+            BridgeStats s = bridge_.stats();
+            return results.size() >= count &&
+                   s.answers + s.reweigh_changes >= static_cast<long long>(count);
+        };
+        for (int round = 0; round < 3000 && !done(); ++round) {
             bus_.handle(std::chrono::milliseconds(10));
             clock_.advance(0.2);
             bridge_.tick();
         }
         bus::drain(bus_);
-        return results.size() >= count;
+        return done();
     }
     // A second of ticks and messages: whatever was due is out.
     void settle() {
