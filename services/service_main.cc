@@ -1,7 +1,7 @@
 #include "service_main.h"
 
-#include "config_file.h"
-#include "systemd_notify.h"
+#include "service/config_file.h"
+#include "service/systemd_notify.h"
 
 #include "bus/lcm_url.h"
 #include "bus/log.h"
@@ -40,17 +40,18 @@ std::set<std::string> named_flags(const std::vector<std::string> &args) {
 }
 
 // The settings of the config file as "--key=value" arguments, those the command line does
-// not override; throws ConfigError for a key that names no flag of `app`.
+// not override; throws service::ConfigError for a key that names no flag of `app`.
 std::vector<std::string> config_arguments(const CLI::App &app, const std::string &program,
                                           const std::string &path,
                                           const std::set<std::string> &on_command_line) {
     static const std::set<std::string> NOT_SETTINGS = {"config", "check-config", "help"};
     std::vector<std::string> out;
-    for (const ConfigSetting &s : read_config_file(path)) {
+    for (const envdesign::service::ConfigSetting &s : envdesign::service::read_config_file(path)) {
         if (NOT_SETTINGS.count(s.key) || app.get_option_no_throw("--" + s.key) == nullptr)
-            throw ConfigError(path + ":" + std::to_string(s.line) + ":" +
-                              std::to_string(s.key_column) + ": error: unknown setting '" + s.key +
-                              "' (" + program + " has no --" + s.key + ")");
+            throw envdesign::service::ConfigError(path + ":" + std::to_string(s.line) + ":" +
+                                                  std::to_string(s.key_column) +
+                                                  ": error: unknown setting '" + s.key + "' (" +
+                                                  program + " has no --" + s.key + ")");
         if (!on_command_line.count(s.key))
             out.push_back("--" + s.key + "=" + s.value);
     }
@@ -104,7 +105,7 @@ std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
                 config_arguments(app, program, *path, named_flags(args));
             args.insert(args.begin() + 1, settings.begin(), settings.end());
         }
-    } catch (const ConfigError &e) {
+    } catch (const envdesign::service::ConfigError &e) {
         std::cerr << e.what() << std::endl;
         return 2;
     }
@@ -152,7 +153,7 @@ int run_until_signal(Service &service, const std::function<int()> &tick) {
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
-    SystemdNotifier systemd;
+    envdesign::service::SystemdNotifier systemd;
     // The watchdog is fed from this loop only, so no wait may outlast its period.
     int max_wait_ms =
         systemd.period() ? std::max<int>(1, systemd.period()->count() / 1000) : 1 << 30;

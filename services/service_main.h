@@ -1,7 +1,7 @@
 #pragma once
-// What the service mains share: the common flags (and --config FILE, config_file.h),
+// What the service mains share: the common flags (and --config FILE, service/config_file.h),
 // logging, the bus, and the loop that runs until SIGINT or SIGTERM, telling systemd it is
-// ready and alive (systemd_notify.h).
+// ready and alive (service/systemd_notify.h).
 
 #include "bus/bus.h"
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace envdesign::services {
+namespace envdesign::service {
 
 // "FILE:LINE:COL: error: ..." (or "FILE: error: ..." when the file cannot be read).
 class ConfigError : public std::runtime_error {
@@ -32,4 +32,4 @@ struct ConfigSetting {
 // "key = value".
 std::vector<ConfigSetting> read_config_file(const std::string &path);
 
-} // namespace envdesign::services
+} // namespace envdesign::service

@@ -1,8 +1,8 @@
-#include "config_file.h"
+#include "service/config_file.h"
 
 #include <fstream>
 
-namespace envdesign::services {
+namespace envdesign::service {
 namespace {
 
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
@@ -62,7 +62,7 @@ std::vector<ConfigSetting> read_config_file(const std::string &path) {
         std::size_t end = start;
         while (end < text.size() && key_char(text[end]))
             ++end;
-        if (end == start)
+        if (end == start || text[start] == '-' || text[start] == '_') // "--x": a flag, not a name
             fail(path, line, start + 1, "expected a setting name (a flag's name, no dashes)");
         std::size_t eq = end;
         while (eq < text.size() && blank(text[eq]))
@@ -79,4 +79,4 @@ std::vector<ConfigSetting> read_config_file(const std::string &path) {
     return settings;
 }
 
-} // namespace envdesign::services
+} // namespace envdesign::service

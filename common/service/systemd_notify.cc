@@ -1,8 +1,8 @@
-#include "systemd_notify.h"
+#include "service/systemd_notify.h"
 
 #include <systemd/sd-daemon.h>
 
-namespace envdesign::services {
+namespace envdesign::service {
 
 SystemdNotifier::SystemdNotifier() {
     std::uint64_t usec = 0;
@@ -29,4 +29,4 @@ void SystemdNotifier::tick() {
 
 void SystemdNotifier::stopping() { sd_notify(0, "STOPPING=1"); }
 
-} // namespace envdesign::services
+} // namespace envdesign::service

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-namespace envdesign::services {
+namespace envdesign::service {
 
 class SystemdNotifier {
 public:
@@ -26,4 +26,4 @@ private:
     std::chrono::steady_clock::time_point last_;
 };
 
-} // namespace envdesign::services
+} // namespace envdesign::service
