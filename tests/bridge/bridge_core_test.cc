@@ -8,6 +8,8 @@
 
 #include "../bus/bus_test_support.h"
 #include "bus/channels.h"
+#include "cluster/coordinator.h"
+#include "cluster/planner.h"
 #include "design/design_search.h"
 #include "design/design_spec.h"
 #include "design/local_evaluator.h"
@@ -61,7 +63,7 @@ std::string read(const std::string &path) {
     return s.str();
 }
 
-BridgeConfig config(double threshold) {
+BridgeConfig config(double threshold, Mode mode) {
     BridgeConfig c;
     c.instance = "bridge/test";
     c.problems = {{"restaurant", SPEC}};
@@ -71,24 +73,44 @@ BridgeConfig config(double threshold) {
     c.tracker.drift.min_samples = 10;
     c.tracker.drift.holdoff_arrivals = 5;
     c.tracker.reweigh_interval_s = 0.1;
-    c.mode = Mode::LOCAL;
+    c.mode = mode;
     c.publish_hz = 1000;
     c.reader_thread = false; // the test pumps
     return c;
 }
 
+std::unique_ptr<cluster::Coordinator> coordinator_on(bus::Bus &bus) {
+    cluster::CoordinatorConfig c;
+    c.instance = "coordinator";
+    c.work_dir = ::testing::TempDir();
+    c.pool.planner_timeout_s = 0.5;
+    c.pool.lost_after_s = 0.15;
+    return std::make_unique<cluster::Coordinator>(bus, c);
+}
+
+std::unique_ptr<cluster::Planner> planner_on(bus::Bus &bus) {
+    cluster::PlannerConfig p;
+    p.instance = "planner-0";
+    p.work_dir = ::testing::TempDir();
+    p.heartbeat_period_s = 0.05;
+    return std::make_unique<cluster::Planner>(bus, p);
+}
+
 // One bridge on one memq bus, with what it publishes collected by the test's thread
-// (subscribed before the bridge starts: memq drops what nobody subscribes to).
+// (subscribed before the bridge starts: memq drops what nobody subscribes to). With
+// Mode::COORDINATOR a coordinator and a planner core share the bus and the test's thread.
 class Rig {
 public:
-    explicit Rig(double threshold)
+    explicit Rig(double threshold, Mode mode = Mode::LOCAL)
         : estimates_(bus_.subscribe<task_distribution_t>(
               bus::TASK_DISTRIBUTION, [this](const task_distribution_t &m) { last_estimate = m; })),
           requests_(bus_.subscribe<task_distribution_t>(
               bus::REEVALUATE, [this](const task_distribution_t &m) { requests.push_back(m); })),
           results_(bus_.subscribe<envdesign::design_result_t>(
               bus::RESULT, [this](const envdesign::design_result_t &m) { results.push_back(m); })),
-          bridge_(bus_, config(threshold), queue_, clock_) {}
+          coordinator_(mode == Mode::COORDINATOR ? coordinator_on(bus_) : nullptr),
+          planner_(mode == Mode::COORDINATOR ? planner_on(bus_) : nullptr),
+          bridge_(bus_, config(threshold, mode), queue_, clock_) {}
 
     // `pattern`: one arrival a character from site dock-1, '1' serve-g1, '2' serve-g2,
     // stamped `ahead_s` ahead of the bridge's wall clock.
@@ -114,7 +136,7 @@ public:
         for (int round = 0; round < 3000 && !done(); ++round) {
             bus_.handle(std::chrono::milliseconds(10));
             clock_.advance(0.2);
-            bridge_.tick();
+            tick();
         }
         bus::drain(bus_);
         return done();
@@ -123,12 +145,19 @@ public:
     void settle() {
         for (int i = 0; i < 5; ++i) {
             clock_.advance(0.2);
-            bridge_.tick();
+            tick();
             bus_.handle(std::chrono::milliseconds(20));
         }
         bus::drain(bus_);
     }
     Bridge &bridge() { return bridge_; }
+    void tick() {
+        bridge_.tick();
+        if (coordinator_)
+            coordinator_->tick();
+        if (planner_)
+            planner_->tick();
+    }
 
     std::optional<task_distribution_t> last_estimate;
     std::vector<task_distribution_t> requests;
@@ -140,6 +169,8 @@ private:
     ManualClock clock_{START_UTIME};
     std::int64_t sequence_ = 0;
     bus::Subscription estimates_, requests_, results_;
+    std::unique_ptr<cluster::Coordinator> coordinator_;
+    std::unique_ptr<cluster::Planner> planner_;
     Bridge bridge_; // last: it publishes from its constructor on
 };
 
@@ -176,6 +207,30 @@ TEST(BridgeCore, ScriptedDriftGivesTheKnownEstimateAndTheOptimalDesign) {
     EXPECT_NEAR(rig.last_estimate->objective, at_01.objective, 1e-9);
     EXPECT_EQ(rig.bridge().design("restaurant").design, at_01.design);
     EXPECT_EQ(rig.bridge().stats().answers, 2);
+}
+
+TEST(BridgeCore, ScriptedDriftThroughACoordinatorGivesTheOptimalDesign) {
+    Rig rig(0.3, Mode::COORDINATOR);
+    ASSERT_TRUE(rig.wait_results(1));
+    Optimum at_09 = exhaustive(0.9), at_01 = exhaustive(0.1);
+    const envdesign::design_result_t &initial = rig.results[0];
+    EXPECT_EQ(initial.sender, "coordinator"); // the coordinator answered the bridge
+    EXPECT_EQ(initial.client, "bridge/test");
+    EXPECT_EQ(initial.design, at_09.design);
+    EXPECT_NEAR(initial.best.objective, at_09.objective, 1e-9);
+    rig.arrive("1222222222");
+    ASSERT_TRUE(rig.wait_results(2));
+    ASSERT_EQ(rig.requests.size(), 2u);
+    EXPECT_EQ(rig.requests[1].reason, task_distribution_t::REASON_DRIFT);
+    const envdesign::design_result_t &drift = rig.results[1];
+    EXPECT_EQ(drift.sender, "coordinator");
+    EXPECT_EQ(drift.design, at_01.design);
+    EXPECT_NEAR(drift.best.objective, 55.949, 1e-3);
+    EXPECT_NEAR(drift.best.objective, at_01.objective, 1e-9);
+    rig.settle();
+    ASSERT_TRUE(rig.last_estimate);
+    EXPECT_EQ(rig.last_estimate->design, at_01.design);
+    EXPECT_EQ(rig.bridge().stats().reweighs, 0); // the store is the coordinator's
 }
 
 TEST(BridgeCore, BelowTheThresholdReweighingBringsTheOptimalDesignWithoutARequest) {
