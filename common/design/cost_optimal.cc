@@ -50,6 +50,20 @@ bool is_cost_optimal(RobotBehaviour behaviour) {
            behaviour == RobotBehaviour::COST_OPTIMAL_BEST_CASE;
 }
 
+std::string behaviour_name(RobotBehaviour behaviour) {
+    switch (behaviour) {
+    case RobotBehaviour::EXPLICABLE:
+        return "EXPLICABLE";
+    case RobotBehaviour::COST_OPTIMAL:
+        return "COST_OPTIMAL";
+    case RobotBehaviour::COST_OPTIMAL_BEST_CASE:
+        return "COST_OPTIMAL_BEST_CASE";
+    case RobotBehaviour::EXPLAINING:
+        return "EXPLAINING";
+    }
+    return "?";
+}
+
 TaskExplicability evaluate_cost_optimal(const ModelPair &models, const ObjectiveWeights &weights,
                                         PlanCache &planner, const Deadline &deadline) {
     PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline);

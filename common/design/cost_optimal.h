@@ -19,10 +19,15 @@
 #include "design/plan_cache.h"
 #include "design/task_evaluation.h"
 
+#include <string>
+
 namespace envdesign::design {
 
 // Whether `behaviour` is one of the two evaluated here.
 bool is_cost_optimal(RobotBehaviour behaviour);
+
+// "EXPLICABLE", "COST_OPTIMAL", ... as in the spec file.
+std::string behaviour_name(RobotBehaviour behaviour);
 
 // `weights.behaviour` must be COST_OPTIMAL or COST_OPTIMAL_BEST_CASE. The optimal costs
 // come through `planner` (cached); the graph and the product are built here.

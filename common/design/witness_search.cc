@@ -1,5 +1,6 @@
 #include "design/witness_search.h"
 
+#include "design/cost_optimal.h"
 #include "design/witness_bound.h"
 #include "design/witness_learning.h"
 
@@ -74,6 +75,11 @@ public:
                 (c.restricting ? "has a negative cost" : "is not restricting (" + c.why_not + ")") +
                 ": added to every configuration");
         }
+        if (is_cost_optimal(problem.weights.behaviour))
+            result_.notes.push_back(
+                "robot_behaviour " + behaviour_name(problem.weights.behaviour) +
+                ": every action of every cost-optimal robot plan is a witness, the IE term is "
+                "bounded by its least value, and no hitting-set phase (docs/design-search.md)");
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
     }
 
