@@ -137,8 +137,11 @@ std::optional<TaskExplicability> decode_evaluation(const std::string &bytes) {
     auto human_plan = r.texts();
     if (has_human_plan)
         e.human_plan = std::move(human_plan);
-    if (!r.at_end() && r.byte() == 1)
+    if (!r.at_end()) { // optional, appended by COST_OPTIMAL modes
+        if (r.byte() != 1)
+            return std::nullopt;
         e.optimal_actions = r.texts();
+    }
     if (!r.ok())
         return std::nullopt;
     return e;

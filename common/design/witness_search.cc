@@ -78,8 +78,9 @@ public:
         if (is_cost_optimal(problem.weights.behaviour))
             result_.notes.push_back(
                 "robot_behaviour " + behaviour_name(problem.weights.behaviour) +
-                ": every action of every cost-optimal robot plan is a witness, the IE term is "
-                "bounded by its least value, and no hitting-set phase (docs/design-search.md)");
+                ": the witnesses are the worst (best) optimal plan and, for a finite worst case, "
+                "every action of every optimal plan; the IE term is bounded by its least "
+                "value, and there is no hitting-set phase (docs/design-search.md)");
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
     }
 
