@@ -7,6 +7,7 @@
 #include <deque>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <span>
 #include <unordered_map>
@@ -237,18 +238,18 @@ void append(std::vector<std::string> &plan, const std::vector<std::string> &more
     plan.insert(plan.end(), more.begin(), more.end());
 }
 
-HumanCost worst_case(Product &p) {
-    Adjacency adjacency;
+// Builds the whole product breadth first into `adjacency`; stops early (returning the
+// answer) at a limit or at the first plan people cannot follow.
+std::optional<HumanCost> explore(Product &p, Adjacency &adjacency) {
     long long steps = 0;
-    for (int i = 0; i < p.size(); ++i) { // breadth first: nodes are appended as found
+    for (int i = 0; i < p.size(); ++i) { // nodes are appended as found
         if (p.limited(++steps))
-            return {};
+            return HumanCost{};
         adjacency.emplace_back();
         p.load(i);
         if (p.robot_goal(i) && !p.human_goal())
             return infinite(p.plan_to(i), p); // ends where the human goal does not hold
-        int robot = p.node(i).robot;
-        for (const auto &edge : p.graph_edges(robot)) {
+        for (const auto &edge : p.graph_edges(p.node(i).robot)) {
             ground::OperatorId h = p.human_step(edge.op);
             if (h < 0) { // the human model cannot follow this step
                 std::vector<std::string> plan = p.plan_to(i);
@@ -263,26 +264,35 @@ HumanCost worst_case(Product &p) {
             p.edges_bytes += sizeof(Product::Edge);
         }
     }
-    int count = 0;
-    std::vector<int> component = components(adjacency, count);
-    auto ending = [&](int v) { return p.robot_goal(v); };
-    auto anywhere = [](int) { return true; };
+    return std::nullopt;
+}
+
+// A cycle that costs the human something: plans round it k times cost ever more. The plan
+// reported goes round it once.
+std::optional<HumanCost> costly_cycle(const Product &p, const Adjacency &adjacency,
+                                      const std::vector<int> &component) {
     for (int u = 0; u < p.size(); ++u)
-        for (const auto &e : adjacency[u])
-            if (e.cost > 0 && component[e.target] == component[u]) {
-                // A cycle costly to the human: plans round it k times cost ever more.
-                int c = component[u], at = -1;
-                auto inside = [&](int v) { return component[v] == c; };
-                std::vector<std::string> plan = p.plan_to(u);
-                plan.push_back(p.robot_name(e.op));
-                append(plan,
-                       walk(
-                           adjacency, p, e.target, [&](int v) { return v == u; }, inside, at));
-                append(plan, walk(adjacency, p, u, ending, anywhere, at));
-                return infinite(std::move(plan), p);
-            }
-    // Longest human cost to an end, component by component (sinks first); within a
-    // component every edge costs 0, so all its nodes share one value.
+        for (const auto &e : adjacency[u]) {
+            if (e.cost == 0 || component[e.target] != component[u])
+                continue;
+            int c = component[u], at = -1;
+            auto inside = [&](int v) { return component[v] == c; };
+            std::vector<std::string> plan = p.plan_to(u);
+            plan.push_back(p.robot_name(e.op));
+            append(plan, walk(
+                             adjacency, p, e.target, [&](int v) { return v == u; }, inside, at));
+            append(plan, walk(
+                             adjacency, p, u, [&](int v) { return p.robot_goal(v); },
+                             [](int) { return true; }, at));
+            return infinite(std::move(plan), p);
+        }
+    return std::nullopt;
+}
+
+// The longest human cost to an end, component by component (sinks first); within a
+// component every edge costs 0, so all its nodes share one value.
+HumanCost longest(const Product &p, const Adjacency &adjacency, const std::vector<int> &component,
+                  int count) {
     std::vector<long long> value(count, UNSET);
     std::vector<std::pair<int, int>> choice(count, {-1, -1}); // node, edge index (-1: end)
     std::vector<std::vector<int>> members(count);
@@ -290,7 +300,7 @@ HumanCost worst_case(Product &p) {
         members[component[v]].push_back(v);
     for (int c = 0; c < count; ++c)
         for (int v : members[c]) {
-            if (ending(v) && value[c] < 0)
+            if (p.robot_goal(v) && value[c] < 0)
                 value[c] = 0, choice[c] = {v, -1};
             for (int k = 0; k < static_cast<int>(adjacency[v].size()); ++k) {
                 const auto &e = adjacency[v][k];
@@ -315,6 +325,17 @@ HumanCost worst_case(Product &p) {
         v = adjacency[u][k].target;
     }
     return out;
+}
+
+HumanCost worst_case(Product &p) {
+    Adjacency adjacency;
+    if (auto early = explore(p, adjacency))
+        return *early;
+    int count = 0;
+    std::vector<int> component = components(adjacency, count);
+    if (auto unbounded = costly_cycle(p, adjacency, component))
+        return *unbounded;
+    return longest(p, adjacency, component, count);
 }
 
 // Dijkstra on human cost over the product, generated as it goes.
