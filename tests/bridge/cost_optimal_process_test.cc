@@ -1,8 +1,9 @@
 // The bridge with a robot that is not an explicable planner (issue 14, robot_behaviour:
 // COST_OPTIMAL): the design it publishes at start is the one for the worst cost-optimal plan
 // (tests/e2e/data/cost-optimal/two-ways.textproto: take the hop away, objective 6, where an
-// explicable robot would need no design), evaluated by the bridge itself and, once the
-// arrivals drift to the other task, by the coordinator and a planner.
+// explicable robot would need no design), evaluated through the coordinator and a planner;
+// when the arrivals drift to the other task, the coordinator answers from the evaluations
+// it stored (their optimal actions included): no design.
 
 #include "harness.h"
 
