@@ -8,11 +8,15 @@
 
 #include "design/cost_optimal.h"
 #include "design/explicability.h"
+#include "design/optimal_plan_graph.h"
+#include "design/worst_case.h"
+#include "ground/grounder.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -320,6 +324,51 @@ TEST(CostOptimal, AnOptimalPlanPeopleCannotFollow) {
     best = evaluate_cost_optimal(m, weights(RobotBehaviour::COST_OPTIMAL_BEST_CASE), planner, {});
     EXPECT_EQ(best.status, ExplicabilityStatus::SOLVED);
     EXPECT_TRUE(std::isinf(best.ie));
+}
+
+// A 20 x 20 grid, unit moves both ways, from one corner to the other: every cell lies on a
+// shortest path and the optimal plans use exactly the 2 * 19 * 20 moves right and up, so
+// the graph has 400 nodes and 760 edges (with the blind heuristic the search registers
+// every state). A stop request or a memory limit of one byte gives LIMIT instead, in the
+// graph and in the product.
+TEST(CostOptimal, GridGraphIsExactAndLimitsStopIt) {
+    const int side = 20;
+    TinyTask t;
+    t.nodes = side * side, t.goal = side * side - 1;
+    t.robot.has_hop = t.robot.has_flip = false;
+    for (int x = 0; x < side; ++x)
+        for (int y = 0; y < side; ++y) {
+            int n = x * side + y;
+            if (x + 1 < side)
+                t.robot.conn.insert({n, n + side}), t.robot.conn.insert({n + side, n});
+            if (y + 1 < side)
+                t.robot.conn.insert({n, n + 1}), t.robot.conn.insert({n + 1, n});
+        }
+    t.human = t.robot;
+    ModelPair m = models_of(t);
+    ground::GroundTask task = ground::ground(m.robot_domain, m.robot_problem, nullptr, {}, false);
+    auto blind = heuristics::make_heuristic(heuristics::HeuristicKind::BLIND, task);
+    OptimalPlanGraph graph = optimal_plan_graph(task, 2 * (side - 1), *blind, {});
+    ASSERT_EQ(graph.status, OptimalPlanGraph::Status::SOLVED);
+    EXPECT_EQ(graph.num_nodes(), side * side);
+    EXPECT_EQ(graph.edges.size(), std::size_t(2 * (side - 1) * side));
+    EXPECT_EQ(std::count(graph.goal.begin(), graph.goal.end(), true), 1);
+
+    GraphLimits stop;
+    stop.stop = [] { return true; };
+    EXPECT_EQ(optimal_plan_graph(task, 2 * (side - 1), *blind, stop).status,
+              OptimalPlanGraph::Status::LIMIT);
+    GraphLimits tiny;
+    tiny.memory_limit_bytes = 1;
+    EXPECT_EQ(optimal_plan_graph(task, 2 * (side - 1), *blind, tiny).status,
+              OptimalPlanGraph::Status::LIMIT);
+    for (Case which : {Case::WORST, Case::BEST}) {
+        EXPECT_EQ(human_cost_of_optimal_plans(graph, task, task, which, stop).status,
+                  HumanCost::Status::LIMIT);
+        HumanCost seen = human_cost_of_optimal_plans(graph, task, task, which, {});
+        EXPECT_EQ(seen.status, HumanCost::Status::SOLVED);
+        EXPECT_EQ(seen.cost, 2 * (side - 1)); // every monotone path costs people 38 too
+    }
 }
 
 } // namespace
