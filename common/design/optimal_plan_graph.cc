@@ -32,9 +32,9 @@ bool is_goal(const ground::GroundTask &task, const search::UnpackedState &state)
     return true;
 }
 
-// Step 1 of the header: every state with g + h <= c*, expanded in g order.
-class ForwardSearch {
-public:
+// Step 1 of the header: every state with g + h <= c*, expanded in g order. A plain struct:
+// steps 2 and 3 read what it found.
+struct ForwardSearch {
     ForwardSearch(const ground::GroundTask &task, long long bound, heuristics::Heuristic &h,
                   const GraphLimits &limits)
         : task_(task), bound_(bound), heuristic_(h), limits_(limits), registry_(task),
@@ -76,7 +76,6 @@ public:
     std::vector<RawEdge> edges_;
     Queue open_;
 
-private:
     void grow(StateID id, int h) {
         if (id >= g_.size()) {
             g_.resize(id + 1, UNREACHED);
