@@ -1480,5 +1480,81 @@ TEST(RankingAgreement, RankingsAgreeWithEveryDesignRanked) {
     EXPECT_GE(proofs, seeds / 5);
 }
 
+// The COST_OPTIMAL modes have their own witnesses (the worst or best optimal plan, and for a
+// finite worst case every action of every optimal plan), so the cones offered to a ranking
+// rest on them: both searches' rankings against every design ranked, both modes, N in
+// {2, 3, 5}, on the generator of CostOptimalBehavioursAgreeWithExhaustive. No hitting-set
+// phase runs in these modes. CI runs 60 seeds per mode; ENVDESIGN_AGREEMENT_SEEDS=200 runs
+// the check.
+TEST(RankingAgreement, CostOptimalRankingsAgreeWithEveryDesignRanked) {
+    const int sizes[] = {2, 3, 5};
+    int seeds = std::getenv("ENVDESIGN_AGREEMENT_SEEDS") ? seeds_from_environment() : 60;
+    int disagreements = 0, full = 0, ties = 0, cone_members = 0, differs_from_explicable = 0;
+    for (const std::string behaviour : {"COST_OPTIMAL", "COST_OPTIMAL_BEST_CASE"}) {
+        for (int s = 0; s < seeds; ++s) {
+            unsigned seed = 300000u + static_cast<unsigned>(s);
+            int n = sizes[s % 3];
+            Generated g = Generator(seed, s % 2 == 0).run();
+            if (s % 3 != 0)
+                add_equal_cost_jumps(g, seed);
+            fs::path dir = directory_for(seed);
+            fs::remove_all(dir);
+            fs::path explicable_spec = write_spec(g, dir / "explicable", false);
+            g.behaviour = behaviour;
+            fs::path spec = write_spec(g, dir, false);
+            DesignProblem problem = load_design_problem(spec.string());
+            std::vector<RankedDesign> reference = every_design_ranked(problem, n);
+            std::vector<RankedDesign> explicable =
+                every_design_ranked(load_design_problem(explicable_spec.string()), n);
+            Answer exhaustive = search(problem, SearchMethod::EXHAUSTIVE, true, n);
+            Answer witness = search(problem, SearchMethod::WITNESS, true, n);
+            std::string diff;
+            for (const auto &[name, answer] :
+                 {std::pair<std::string, const Answer &>{"exhaustive", exhaustive},
+                  {"witness", witness}}) {
+                std::string d = ranking_disagreement(answer.ranking, reference);
+                if (!answer.optimal)
+                    d += " not optimal;";
+                if (!d.empty())
+                    diff += "\n  " + name + ":" + d + show(problem, answer.ranking);
+            }
+            if (!diff.empty()) {
+                ++disagreements;
+                ADD_FAILURE() << behaviour << " seed " << seed << " (N = " << n << "), spec "
+                              << spec.string() << ":" << diff
+                              << "\n  every design:" << show(problem, reference);
+                continue;
+            }
+            fs::remove_all(dir);
+            full += static_cast<int>(reference.size()) == n;
+            differs_from_explicable += !ranking_disagreement(explicable, reference).empty();
+            for (std::size_t i = 1; i < reference.size(); ++i) {
+                ties += nearly_equal(reference[i].objective, reference[i - 1].objective);
+                for (std::size_t j = 0; j < i; ++j) {
+                    const auto &a = reference[j].configuration, &b = reference[i].configuration;
+                    double extra = problem.weights.beta *
+                                   (reference[i].design_cost - reference[j].design_cost);
+                    if (b.size() > a.size() &&
+                        std::includes(b.begin(), b.end(), a.begin(), a.end()) &&
+                        same_value(reference[i].objective, reference[j].objective + extra)) {
+                        ++cone_members;
+                        break;
+                    }
+                }
+            }
+        }
+    }
+    std::cout << "[ ranking   ] cost-optimal behaviours: " << 2 * seeds << " problems, "
+              << disagreements << " disagreements; full rankings " << full << ", ties " << ties
+              << ", supersets at exactly the added cost " << cone_members
+              << ", ranking differs from EXPLICABLE's " << differs_from_explicable << std::endl;
+    if (seeds < 40)
+        return;
+    EXPECT_GE(full, seeds / 2);
+    EXPECT_GE(ties, 5);
+    EXPECT_GE(cone_members, 5);
+    EXPECT_GE(differs_from_explicable, seeds / 5);
+}
+
 } // namespace
 } // namespace envdesign::design
