@@ -90,6 +90,15 @@ def parse_url(url):
 class UdpmBus:
     """LCM over UDP multicast (LCM's udpm:// provider), as far as a client needs it."""
 
+    # Reassembly's bounds, so that forged fragments cannot grow our memory: no message
+    # above MAX_MESSAGE_BYTES (4x what the bus carries reliably, PLATFORM.md), at most
+    # MAX_PARTIALS messages in reassembly and MAX_BUFFERED_BYTES held by them, the least
+    # recently touched going first, and none untouched for PARTIAL_EXPIRY_S.
+    MAX_MESSAGE_BYTES = 16 << 20
+    MAX_PARTIALS = 8
+    MAX_BUFFERED_BYTES = 32 << 20
+    PARTIAL_EXPIRY_S = 5.0
+
     def __init__(self, url, auth=None):
         self.auth = auth  # envdesign_auth.Auth, or None: unauthenticated
         self.group, self.port, options = parse_url(url)
@@ -104,7 +113,8 @@ class UdpmBus:
         self.rx.bind(("", self.port))
         membership = struct.pack("4s4s", socket.inet_aton(self.group), socket.inet_aton("0.0.0.0"))
         self.rx.setsockopt(socket.IPPROTO_IP, socket.IP_ADD_MEMBERSHIP, membership)
-        self.partial = {}  # (sender, sequence) -> [channel, size, {offset: bytes}]
+        self.partial = {}  # (sender, sequence) -> _Partial, least recently touched first
+        self.held = 0  # bytes held in self.partial
 
     def close(self):
         self.tx.close()
@@ -155,20 +165,68 @@ class UdpmBus:
         if len(datagram) < 20 or struct.unpack(">I", datagram[:4])[0] != FRAGMENT_MAGIC:
             return None  # not LCM
         _, sequence, size, offset, number, count = struct.unpack(">IIIIHH", datagram[:20])
-        key = (sender, sequence)
-        data = datagram[20:]
-        entry = self.partial.setdefault(key, [None, size, {}])
+        if size > self.MAX_MESSAGE_BYTES or number >= count:
+            return None
+        now = time.monotonic()
+        while self.partial:  # least recently touched first: expired ones lead
+            key, oldest = next(iter(self.partial.items()))
+            if now - oldest.touched < self.PARTIAL_EXPIRY_S:
+                break
+            self._drop(key)
+        data, channel = datagram[20:], None
         if number == 0:
             name, _, data = data.partition(b"\0")
-            entry[0] = name.decode(errors="replace")
-        entry[2][offset] = data
-        if entry[0] is None or sum(len(d) for d in entry[2].values()) < size:
-            if len(self.partial) > 64:  # stale partial messages
-                self.partial.pop(next(iter(self.partial)))
+            if offset != 0:
+                return None
+            channel = name.decode(errors="replace")
+        if offset + len(data) > size:
             return None
-        del self.partial[key]
-        payload = b"".join(entry[2][o] for o in sorted(entry[2]))
-        return entry[0], payload[:size]
+        key = (sender, sequence)
+        entry = self.partial.get(key)
+        if entry is None:
+            # Like LCM, one message per sender in reassembly: a sender sends its fragments
+            # in order, so its older message lost a fragment.
+            for other in [k for k in self.partial if k[0] == sender]:
+                self._drop(other)
+            entry = self.partial[key] = _Partial(size, count)
+        elif entry.size != size or entry.count != count or number in entry.pieces:
+            return None  # contradicts what came before, or a repeat
+        if channel is not None:
+            entry.channel = channel
+        entry.pieces[number] = (offset, data)
+        entry.touched = now
+        self.held += len(data)
+        self.partial[key] = self.partial.pop(key)  # now the most recently touched
+        if len(entry.pieces) == count:
+            self._drop(key)
+            payload, at = [], 0
+            for piece_offset, piece in sorted(entry.pieces.values(), key=lambda p: p[0]):
+                if piece_offset != at:
+                    return None  # gaps or overlaps: not one message
+                payload.append(piece)
+                at += len(piece)
+            return (entry.channel, b"".join(payload)) if at == size else None
+        # Over a bound: the least recently touched go (not this one: it is the most recent,
+        # and alone it holds at most MAX_MESSAGE_BYTES <= MAX_BUFFERED_BYTES).
+        while len(self.partial) > self.MAX_PARTIALS or self.held > self.MAX_BUFFERED_BYTES:
+            self._drop(next(iter(self.partial)))
+        return None
+
+    def _drop(self, key):
+        self.held -= self.partial.pop(key).held()
+
+
+class _Partial:
+    """A message in reassembly: its fragments by number, as (offset in the payload, bytes)."""
+
+    def __init__(self, size, count):
+        self.size, self.count = size, count
+        self.channel = None
+        self.pieces = {}
+        self.touched = 0.0
+
+    def held(self):
+        return sum(len(data) for _, data in self.pieces.values())
 
 
 TOKEN = re.compile(r"""\s+|\#[^\n]*|(?P<id>[A-Za-z_][\w.]*)|(?P<str>(?:"(?:[^"\\\n]|\\.)*"\s*|'(?:[^'\\\n]|\\.)*'\s*)+)|(?P<open>[{<])|(?P<close>[}>])|.""")

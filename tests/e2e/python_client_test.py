@@ -2,13 +2,17 @@
 """python_client_test.py BUILD_DIR: the Python client (clients/python) against a local
 cluster (deploy/cluster.sh): the self-contained run's design, a spec far larger than a
 datagram (LCM fragments both ways), bad input, and no coordinator; and with bus keys: signed
-requests and results with a keyed cluster, an unsigned client unheard, the trailer's checks."""
+requests and results with a keyed cluster, an unsigned client unheard, the trailer's checks;
+forged fragments against the reassembly's bounds."""
 import json
 import os
+import resource
 import shutil
+import struct
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 BUILD = os.path.abspath(sys.argv.pop(1))
@@ -224,6 +228,104 @@ class Trailer(unittest.TestCase):
                                           ("ENVDESIGN_RESULT", "bad-mac"): 1,
                                           ("ENVDESIGN_CANCEL", "bad-mac"): 1,
                                           ("ENVDESIGN_CANCEL", "unauthenticated"): 1})
+
+
+
+# Run in another process: forged fragments on the bus, with a genuine fragmented message
+# (GENUINE_PAYLOAD on channel GENUINE) published from a real UdpmBus in the middle.
+FORGER = r"""
+import socket, struct, sys, time
+import envdesign_client
+group, port, genuine_size = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+MAGIC, PIECE = 0x4C433033, b"f" * 60000
+senders = [socket.socket(socket.AF_INET, socket.SOCK_DGRAM) for _ in range(31)]
+overrun = senders.pop()
+sent = 0
+def send(s, sequence, size, offset, number, count, data=PIECE):
+    global sent
+    s.sendto(struct.pack(">IIIIHH", MAGIC, sequence, size, offset, number, count) + data,
+             (group, port))
+    sent += 20 + len(data)
+    time.sleep(0.0003)  # keep within what the receiver drains: these must arrive
+# A message claiming nearly 4 GB, its fragments all at new offsets: the old reassembly kept
+# every one (60 MB).
+for i in range(1, 1001):
+    send(senders[0], 1, 0xFFFFFFF0, i * 60000, i, 65535)
+# Six senders, each a message of the largest size taken, every tenth fragment sent twice,
+# one that overruns its message each round (old: 36 MB held); then 24 more senders at once.
+LARGEST = envdesign_client.UdpmBus.MAX_MESSAGE_BYTES
+for r in range(1, 101):
+    for k, s in enumerate(senders[:6]):
+        for _ in range(1 if r % 10 else 2):
+            send(s, 1000 + k, LARGEST, r * 60000, r, 300)
+    send(overrun, 5000 + r, 1000, 0, 1, 2)
+    if r == 50:
+        bus = envdesign_client.UdpmBus(f"udpm://{group}:{port}?ttl=0")
+        bus.publish("GENUINE", bytes(i * 7 % 251 for i in range(genuine_size)))
+        bus.close()
+for r in range(1, 4):
+    for k, s in enumerate(senders[6:]):
+        send(s, 2000 + k, LARGEST, r * 60000, r, 300)
+print(sent)
+"""
+
+
+class ForgedFragments(unittest.TestCase):
+    """The client's own fragment reassembly under forged fragments from another process: the
+    messages in reassembly and the bytes they hold stay within UdpmBus's bounds while the
+    forger sends several times more, the process's peak memory with them, and a genuine
+    fragmented message sent in the middle still arrives whole."""
+    url = f"udpm://239.255.76.67:{64000 + os.getpid() % 1000}?ttl=0"  # apart from the others
+
+    def test_bounded_and_the_genuine_message_arrives(self):
+        Bus = envdesign_client.UdpmBus
+        bus = Bus(self.url)
+        self.addCleanup(bus.close)
+        seen = {"bytes": 0, "partials": 0, "held": 0}
+        take = bus._take
+
+        def watched(datagram, sender):  # the bounds after every datagram
+            out = take(datagram, sender)
+            seen["bytes"] += len(datagram)
+            seen["partials"] = max(seen["partials"], len(bus.partial))
+            seen["held"] = max(seen["held"], bus.held)
+            self.assertEqual(bus.held, sum(p.held() for p in bus.partial.values()))
+            return out
+        bus._take = watched
+        genuine_size = 300000  # 5 fragments
+        before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+        group, port, _ = envdesign_client.parse_url(self.url)
+        forger = subprocess.Popen(
+            [sys.executable, "-c", FORGER, group, str(port), str(genuine_size)],
+            stdout=subprocess.PIPE, text=True,
+            env=dict(os.environ, PYTHONPATH=os.path.join(ROOT, "clients", "python")))
+        self.addCleanup(forger.kill)
+        genuine = []
+        while forger.poll() is None or not genuine:
+            message = bus.receive(0.2)
+            if message:
+                genuine.append(message)
+            elif forger.poll() is not None:
+                break  # the forger is done and the bus is quiet
+        while bus.receive(0.2):  # what is still queued
+            pass
+        sent = int(forger.communicate(timeout=30)[0])
+        peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+        self.assertEqual(genuine, [("GENUINE", bytes(i * 7 % 251 for i in range(genuine_size)))])
+        # Most of the ~100 MB forged arrived, three times the bytes reassembly may hold.
+        self.assertGreater(seen["bytes"], 3 * Bus.MAX_BUFFERED_BYTES, f"of {sent} sent")
+        self.assertEqual(seen["partials"], Bus.MAX_PARTIALS)
+        self.assertLessEqual(seen["held"], Bus.MAX_BUFFERED_BYTES)
+        self.assertGreater(seen["held"], Bus.MAX_BUFFERED_BYTES // 2)  # the bound was reached
+        self.assertLess(peak - before, Bus.MAX_BUFFERED_BYTES + (16 << 20))
+        # Expiry: partial messages untouched for PARTIAL_EXPIRY_S go with the next fragment.
+        self.assertGreater(len(bus.partial), 1)
+        bus.PARTIAL_EXPIRY_S = 0.3
+        time.sleep(0.4)
+        bus._take(struct.pack(">IIIIHH", envdesign_client.FRAGMENT_MAGIC, 7, 100, 0, 0, 2) +
+                  b"C\0" + b"x" * 50, ("127.0.0.1", 9))
+        self.assertEqual(len(bus.partial), 1)
+        self.assertEqual(bus.held, 50)
 
 
 if __name__ == "__main__":
