@@ -39,6 +39,17 @@ inline std::string unique_url(int n = 0) {
 
 using testing::Process;
 
+// True once `line` is in what `p` printed, false if `timeout_s` passes first.
+inline bool wait_for_output(Process &p, const std::string &line, double timeout_s = 10) {
+    auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (std::chrono::steady_clock::now() < end) {
+        if (p.output().find(line) != std::string::npos)
+            return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+}
+
 // Hears heartbeats, to know which planners the coordinator can see.
 class HeartbeatWatcher {
 public:

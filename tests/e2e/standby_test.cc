@@ -63,16 +63,6 @@ private:
     std::thread thread_;
 };
 
-bool wait_for_log(Process &p, const std::string &line, std::chrono::seconds timeout) {
-    auto end = std::chrono::steady_clock::now() + timeout;
-    while (std::chrono::steady_clock::now() < end) {
-        if (p.output().find(line) != std::string::npos)
-            return true;
-        std::this_thread::sleep_for(50ms);
-    }
-    return false;
-}
-
 TEST(Standby, ASecondCoordinatorStandsByAndTakesOverWhenTheFirstDies) {
     LocalCluster cluster(1, {"--takeover-after", "2"});
     auto dir =
@@ -81,10 +71,9 @@ TEST(Standby, ASecondCoordinatorStandsByAndTakesOverWhenTheFirstDies) {
     Process standby({binary("envdesign-coordinator"), "--lcm-url", cluster.url(), "--name",
                      "coordinator-b", "--planner-timeout", "0.5", "--takeover-after", "2"},
                     (dir / "coordinator-b.log").string());
-    ASSERT_TRUE(wait_for_log(standby, "standing by: coordinator coordinator started earlier", 10s))
+    ASSERT_TRUE(wait_for_output(standby, "standing by: coordinator coordinator started earlier"))
         << standby.output();
-    ASSERT_TRUE(wait_for_log(cluster.coordinator(), "active: no coordinator", 10s))
-        << cluster.logs();
+    ASSERT_TRUE(wait_for_output(cluster.coordinator(), "active: no coordinator")) << cluster.logs();
     EXPECT_EQ(cluster.coordinator().output().find("standing by"), std::string::npos);
 
     Tally tally(cluster.url());
@@ -103,8 +92,7 @@ TEST(Standby, ASecondCoordinatorStandsByAndTakesOverWhenTheFirstDies) {
     EXPECT_EQ(standby.output().find("accepted"), std::string::npos) << standby.output();
 
     cluster.coordinator().signal(SIGKILL);
-    ASSERT_TRUE(
-        wait_for_log(standby, "taking over: coordinator coordinator has not been heard", 10s))
+    ASSERT_TRUE(wait_for_output(standby, "taking over: coordinator coordinator has not been heard"))
         << standby.output();
     client::Result second = client::run_design_remote(spec, cluster.url());
     ASSERT_EQ(second.exit_code, 0) << second.error << standby.output();

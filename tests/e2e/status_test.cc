@@ -3,10 +3,14 @@
 
 #include "local_cluster.h"
 
+#include "bus/log.h"
 #include "bus/status.h"
 #include "envdesign/service_status_t.hpp"
 
 #include <envdesign/client/client.h>
+
+#include <ctime>
+#include <iterator>
 
 namespace envdesign::e2e {
 namespace {
@@ -122,6 +126,84 @@ TEST(Status, CommandListsTheServices) {
     EXPECT_EQ(by_name["coordinator"]["planners"], 2);
     EXPECT_EQ(by_name["planner-1"]["kind"], "planner");
     EXPECT_TRUE(by_name["coordinator"]["drops"].is_array());
+}
+
+// Two coordinators on one bus (issue 10): the first active, the second standing by. The
+// command shows each one's role and start (started_utime, and as UTC text in both outputs),
+// each start between the wall-clock moments around that coordinator's launch.
+TEST(Status, CommandShowsEachCoordinatorsRoleAndStart) {
+    std::int64_t before = bus::now_utime();
+    LocalCluster cluster(1, {"--takeover-after", "2"});
+    ASSERT_TRUE(wait_for_output(cluster.coordinator(), "active: no coordinator")) << cluster.logs();
+    std::int64_t between = bus::now_utime();
+    auto log = std::filesystem::temp_directory_path() /
+               ("envdesign-status-b-" + std::to_string(getpid()) + ".log");
+    Process standby({binary("envdesign-coordinator"), "--lcm-url", cluster.url(), "--name",
+                     "coordinator-b", "--planner-timeout", "0.5", "--takeover-after", "2"},
+                    log.string());
+    ASSERT_TRUE(wait_for_output(standby, "standing by: coordinator coordinator started earlier"))
+        << standby.output();
+    std::int64_t after = bus::now_utime();
+
+    int exit_code = -1;
+    std::string lines = command_output(binary("envdesign") + " status --json --connect '" +
+                                           cluster.url() + "' --seconds 2.5",
+                                       &exit_code);
+    EXPECT_EQ(exit_code, 0) << lines;
+    std::istringstream in(lines);
+    std::map<std::string, nlohmann::json> by_name;
+    for (std::string line; std::getline(in, line);) {
+        auto j = nlohmann::json::parse(line);
+        by_name[j["name"]] = j;
+    }
+    ASSERT_EQ(by_name.size(), 3u) << lines;
+    EXPECT_EQ(by_name["coordinator"]["role"], "active");
+    EXPECT_EQ(by_name["coordinator-b"]["role"], "standby");
+    EXPECT_EQ(by_name["planner-0"]["role"], "");
+    std::int64_t a = by_name["coordinator"]["started_utime"];
+    std::int64_t b = by_name["coordinator-b"]["started_utime"];
+    EXPECT_GE(a, before);
+    EXPECT_LE(a, between);
+    EXPECT_GE(b, between);
+    EXPECT_LE(b, after);
+    EXPECT_GE(by_name["planner-0"]["started_utime"].get<std::int64_t>(), before);
+    // The text reads back (strptime, timegm) as the second of started_utime.
+    for (const char *name : {"coordinator", "coordinator-b", "planner-0"}) {
+        std::string text = by_name[name]["started"];
+        std::tm tm{};
+        const char *end = strptime(text.c_str(), "%Y-%m-%dT%H:%M:%SZ", &tm);
+        ASSERT_TRUE(end && *end == '\0') << name << ": " << text;
+        EXPECT_EQ(static_cast<std::int64_t>(timegm(&tm)),
+                  by_name[name]["started_utime"].get<std::int64_t>() / 1000000)
+            << name;
+    }
+
+    // The table: ROLE and STARTED columns, "-" for a planner's role.
+    std::string table = command_output(binary("envdesign") + " status --connect '" + cluster.url() +
+                                           "' --seconds 2.5 2>&1",
+                                       &exit_code);
+    EXPECT_EQ(exit_code, 0) << table;
+    std::map<std::string, std::vector<std::string>> rows;
+    std::istringstream table_in(table);
+    for (std::string line; std::getline(table_in, line);) {
+        std::istringstream words(line);
+        std::vector<std::string> row{std::istream_iterator<std::string>(words), {}};
+        if (row.size() >= 5)
+            rows[row[1]] = row;
+    }
+    ASSERT_TRUE(rows.count("NAME")) << table;
+    EXPECT_EQ(rows["NAME"][2], "ROLE");
+    EXPECT_EQ(rows["NAME"][4], "STARTED");
+    for (auto [name, role] : {std::pair<std::string, std::string>{"coordinator", "active"},
+                              {"coordinator-b", "standby"},
+                              {"planner-0", "-"}}) {
+        ASSERT_TRUE(rows.count(name)) << name << " not in\n" << table;
+        EXPECT_EQ(rows[name][2], role) << table;
+        EXPECT_EQ(rows[name][4], by_name[name]["started"]) << table;
+    }
+    standby.signal(SIGTERM);
+    EXPECT_EQ(standby.wait(), 0);
+    std::filesystem::remove(log);
 }
 
 TEST(Status, CommandOnAnEmptyBusSaysNoCoordinator) {

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/fmt/fmt.h>
 
+#include <ctime>
+
 namespace envdesign::client {
 namespace {
 
@@ -24,6 +26,21 @@ long long all_drops(const service_status_t &s) {
 // Seconds since it was sent, by the listener's clock.
 double age_s(const service_status_t &s) { return (bus::now_utime() - s.utime) / 1e6; }
 
+// When it started, UTC to the second ("2026-12-01T00:19:30Z"); "-" if it did not say.
+std::string started(const service_status_t &s) {
+    if (s.started_utime <= 0)
+        return "-";
+    std::time_t seconds = static_cast<std::time_t>(s.started_utime / 1000000);
+    std::tm tm{};
+    gmtime_r(&seconds, &tm);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return text;
+}
+
+// A coordinator's role (active, standby, discovering); "-" for the other kinds.
+std::string role(const service_status_t &s) { return s.role.empty() ? "-" : s.role; }
+
 std::string json_line(const service_status_t &s) {
     nlohmann::json drops = nlohmann::json::array();
     for (int i = 0; i < s.num_drops; ++i)
@@ -33,6 +50,9 @@ std::string json_line(const service_status_t &s) {
     nlohmann::json j = {{"kind", s.kind},
                         {"name", s.sender},
                         {"version", s.version},
+                        {"role", s.role},
+                        {"started_utime", s.started_utime},
+                        {"started", started(s)},
                         {"uptime_s", s.uptime_s},
                         {"age_s", age_s(s)},
                         {"requests_open", s.requests_open},
@@ -48,17 +68,17 @@ std::string json_line(const service_status_t &s) {
 }
 
 std::string table(const std::map<std::string, service_status_t> &services) {
-    std::string out = fmt::format("{:<12} {:<28} {:<8} {:>9} {:>5} {:>7} {:>8} {:>7} {:>9} {:>9} "
-                                  "{:>6}\n",
-                                  "KIND", "NAME", "VERSION", "UPTIME_S", "OPEN", "WAITING",
-                                  "PLANNERS", "JOBS", "DONE", "STORED", "DROPS");
+    std::string out = fmt::format("{:<12} {:<28} {:<11} {:<8} {:<20} {:>9} {:>5} {:>7} {:>8} {:>7} "
+                                  "{:>9} {:>9} {:>6}\n",
+                                  "KIND", "NAME", "ROLE", "VERSION", "STARTED", "UPTIME_S", "OPEN",
+                                  "WAITING", "PLANNERS", "JOBS", "DONE", "STORED", "DROPS");
     std::string details;
     for (const auto &[name, s] : services) {
-        out += fmt::format("{:<12} {:<28} {:<8} {:>9.0f} {:>5} {:>7} {:>8} {:>7} {:>9} {:>9} "
-                           "{:>6}\n",
-                           s.kind, name, s.version, s.uptime_s, s.requests_open, s.requests_waiting,
-                           s.planners, s.jobs_in_flight, s.jobs_done, s.stored_evaluations,
-                           all_drops(s));
+        out += fmt::format("{:<12} {:<28} {:<11} {:<8} {:<20} {:>9.0f} {:>5} {:>7} {:>8} {:>7} "
+                           "{:>9} {:>9} {:>6}\n",
+                           s.kind, name, role(s), s.version, started(s), s.uptime_s,
+                           s.requests_open, s.requests_waiting, s.planners, s.jobs_in_flight,
+                           s.jobs_done, s.stored_evaluations, all_drops(s));
         if (s.malformed > 0)
             details += fmt::format("  {}: {} malformed\n", name, s.malformed);
         if (s.handler_errors > 0)
