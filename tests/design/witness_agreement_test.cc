@@ -1504,8 +1504,8 @@ TEST(RankingAgreement, CostOptimalRankingsAgreeWithEveryDesignRanked) {
             fs::path spec = write_spec(g, dir, false);
             DesignProblem problem = load_design_problem(spec.string());
             std::vector<RankedDesign> reference = every_design_ranked(problem, n);
-            std::vector<RankedDesign> explicable =
-                every_design_ranked(load_design_problem(explicable_spec.string()), n);
+            Answer explicable = search(load_design_problem(explicable_spec.string()),
+                                       SearchMethod::WITNESS, true, n); // only counted below
             Answer exhaustive = search(problem, SearchMethod::EXHAUSTIVE, true, n);
             Answer witness = search(problem, SearchMethod::WITNESS, true, n);
             std::string diff;
@@ -1527,7 +1527,7 @@ TEST(RankingAgreement, CostOptimalRankingsAgreeWithEveryDesignRanked) {
             }
             fs::remove_all(dir);
             full += static_cast<int>(reference.size()) == n;
-            differs_from_explicable += !ranking_disagreement(explicable, reference).empty();
+            differs_from_explicable += !ranking_disagreement(explicable.ranking, reference).empty();
             for (std::size_t i = 1; i < reference.size(); ++i) {
                 ties += nearly_equal(reference[i].objective, reference[i - 1].objective);
                 for (std::size_t j = 0; j < i; ++j) {
