@@ -1,11 +1,11 @@
 #include "design_command.h"
 
+#include "local_run.h"
+#include "result_format.h"
+
 #include "design/design_search.h"
-#include "design/design_spec.h"
-#include "design/local_evaluator.h"
 #include "design/progress.h"
 #include "design/relevance.h"
-#include "design/result_json.h"
 
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
@@ -17,40 +17,6 @@
 
 namespace envdesign::cli {
 namespace {
-
-std::string number(double value) { return design::json_number(value).dump(); }
-
-void print_terms(const std::string &label, const design::EvaluatedDesign &d) {
-    const auto &t = d.objective.terms;
-    std::cout << label << number(d.objective.value) << " (inexplicability "
-              << number(t.inexplicability) << ", design cost " << number(t.design_cost)
-              << ", robot cost " << number(t.robot_cost) << ")\n";
-}
-
-void print_text(const design::DesignProblem &problem, const design::DesignResult &result) {
-    std::cout << "status: " << (result.optimal ? "optimal" : "best_found") << "\n";
-    if (!result.best) {
-        std::cout << "no configuration was evaluated in time\n";
-        return;
-    }
-    std::cout << "design: " << design::to_string(problem, result.best->ranked.configuration)
-              << "\n";
-    print_terms("objective: ", *result.best);
-    if (result.baseline)
-        print_terms("baseline: ", *result.baseline);
-    for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
-        const auto &t = result.best->tasks[i];
-        std::cout << "task " << problem.tasks[i].name << ": ie " << number(t.ie) << ", robot cost "
-                  << number(t.robot_cost) << ", plan";
-        for (const auto &step : t.plan)
-            std::cout << " " << step;
-        std::cout << "\n";
-    }
-    if (result.gap)
-        std::cout << "proven gap: " << number(*result.gap) << "\n";
-    for (const auto &note : result.notes)
-        std::cout << "note: " << note << "\n";
-}
 
 design::DesignSearchOptions search_options(const DesignFlags &flags,
                                            const design::DesignProblem &problem) {
@@ -125,36 +91,30 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
 int run_design(const DesignFlags &flags) {
     if (!flags.connect.empty())
         return run_design_remote(flags);
-    design::DesignProblem problem;
-    try {
-        problem = design::load_design_problem(flags.spec);
-    } catch (const pddl::ParseError &e) {
-        std::cerr << e.what() << std::endl;
+    std::optional<design::DesignProblem> problem = load_problem(flags.spec);
+    if (!problem)
         return 2;
-    }
-    design::DesignSearchOptions options = search_options(flags, problem);
-    planning::PlannerOptions planner;
-    planner.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
-    design::LocalEvaluator evaluator(problem, flags.workers, planner);
+    design::DesignSearchOptions options = search_options(flags, *problem);
+    LocalRun run(*problem, flags.workers, flags.heuristic);
     if (flags.prune == "relevant")
         options.relevant = [&](const design::Configuration &c) {
-            return design::relevant_modifications(problem, c, evaluator.planner(),
+            return design::relevant_modifications(*problem, c, run.local().planner(),
                                                   options.deadline);
         };
     design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     design::DesignResult result;
+    envdesign::design_result_t message;
     try {
-        result = design::search_design(problem, evaluator, options,
+        result = design::search_design(*problem, run.evaluator(), options,
                                        [&](const design::SearchProgress &p) { printer.update(p); });
+        printer.finish(result);
+        message = run.message(result, options.deadline);
     } catch (const pddl::ParseError &e) { // a modified model that does not ground
         std::cerr << "\n" << e.what() << std::endl;
         return 2;
     }
-    printer.finish(result);
-    if (flags.json)
-        std::cout << design::json_text(design::design_json(problem, result)) << std::endl;
-    else
-        print_text(problem, result);
+    std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
+              << std::flush;
     if (result.limit_reached)
         spdlog::warn("the time limit stopped the search; the design is the best found");
     return result.limit_reached ? 4 : 0;

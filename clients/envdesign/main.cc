@@ -2,8 +2,10 @@
 // this file only wires them up and maps failures to the exit codes of SPEC.md.
 
 #include "design_command.h"
+#include "evaluate_command.h"
 #include "explicable_command.h"
 #include "plan_command.h"
+#include "report_command.h"
 #include "status_command.h"
 #include "validate_command.h"
 
@@ -65,6 +67,16 @@ int main(int argc, char **argv) {
     auto *design = app.add_subcommand("design", "optimal environment design of a design problem");
     envdesign::cli::add_design_flags(*design, design_flags);
 
+    envdesign::cli::EvaluateFlags evaluate_flags;
+    auto *evaluate =
+        app.add_subcommand("evaluate", "a proposed design, explained as `design` does");
+    envdesign::cli::add_evaluate_flags(*evaluate, evaluate_flags);
+
+    envdesign::cli::ReportFlags report_flags;
+    auto *report =
+        app.add_subcommand("report", "an HTML page of the design (plots, plans, ranking)");
+    envdesign::cli::add_report_flags(*report, report_flags);
+
     envdesign::cli::StatusFlags status_flags;
     auto *status =
         app.add_subcommand("status", "the services on a bus (coordinator, planners, bridges)");
@@ -88,6 +100,10 @@ int main(int argc, char **argv) {
             return with_output_checked(envdesign::cli::run_explicable(explicable_flags));
         if (*design)
             return with_output_checked(envdesign::cli::run_design(design_flags));
+        if (*evaluate)
+            return with_output_checked(envdesign::cli::run_evaluate(evaluate_flags));
+        if (*report)
+            return with_output_checked(envdesign::cli::run_report(report_flags));
         if (*status)
             return with_output_checked(envdesign::cli::run_status(status_flags));
     } catch (const std::bad_alloc &) {

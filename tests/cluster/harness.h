@@ -6,10 +6,10 @@
 #include "bus/channels.h"
 #include "cluster/coordinator.h"
 #include "cluster/planner.h"
+#include "cluster/result_message.h"
 #include "design/design_search.h"
 #include "design/design_spec.h"
 #include "design/local_evaluator.h"
-#include "design/result_json.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "result_format.h"
@@ -43,7 +43,8 @@ inline nlohmann::json local_result(const std::string &spec_path) {
     design::LocalEvaluator evaluator(problem, 2);
     design::DesignSearchOptions options;
     options.max_design_size = problem.max_design_size;
-    return design::design_json(problem, design::search_design(problem, evaluator, options));
+    design::DesignResult result = design::search_design(problem, evaluator, options);
+    return client::result_json_value(result_message(problem, result, {}));
 }
 
 // The fields of SPEC.md's result that do not depend on how the work was spread (the witness
