@@ -82,7 +82,7 @@ std::string label(const envdesign::design_point_t &p) {
 }
 
 const char *HEADER = "set terminal svg size 720,380 dynamic font 'sans,12' background '#ffffff'\n"
-                     "set key outside right top noenhanced\n"
+                     "set key below noenhanced\n"
                      "set grid\n";
 
 // The designs drawn: the ranking (or the chosen one), then the baseline if not among them.
