@@ -28,6 +28,7 @@ design::DesignSearchOptions search_options(const DesignFlags &flags,
     options.batch_size = 4 * std::max(1, flags.workers);
     options.method = flags.search == "exhaustive" ? design::SearchMethod::EXHAUSTIVE
                                                   : design::SearchMethod::WITNESS;
+    options.ranking = flags.ranking;
     return options;
 }
 
@@ -39,6 +40,11 @@ void on_interrupt(int) { interrupted = 1; }
 int run_design_remote(const DesignFlags &flags) {
     if (flags.workers != 1)
         spdlog::warn("--workers does not apply with --connect: the cluster's planners work");
+    if (flags.ranking > 0) { // the request message carries no ranking yet
+        std::cerr << "--ranking: not available with --connect yet; run without --connect"
+                  << std::endl;
+        return 2;
+    }
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     client::Options options;
@@ -79,6 +85,10 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
         .add_option("--search", flags.search,
                     "witness (exact, grows designs where they matter) | exhaustive (every subset)")
         ->check(CLI::IsMember({"witness", "exhaustive"}));
+    command
+        .add_option("--ranking", flags.ranking,
+                    "list the N best designs, best first (0: the best alone)")
+        ->check(CLI::Range(0, 100000));
     command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
         ->check(CLI::IsMember({"none", "relevant"}));
     command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")

@@ -22,10 +22,13 @@
 // (relevance.h); the same bounds apply.
 // The result is "optimal" only when every configuration was evaluated or skipped by these
 // bounds, no planner hit the time limit, and the pruning left no configuration out.
+// With options.ranking = N the result also lists the N best designs, and every bound above
+// compares with the N-th best objective found instead of the best (ranking.h).
 
 #include "design/design_problem.h"
 #include "design/evaluator.h"
 #include "design/objective.h"
+#include "design/ranking.h"
 
 #include <chrono>
 #include <functional>
@@ -106,10 +109,14 @@ struct DesignResult {
 void close_counters(DesignCounters &counters, const Evaluator &evaluator,
                     std::chrono::steady_clock::time_point start);
 
-// Shared by the searches: the evaluated design `configuration` (every task known), and
-// whether it replaces result.best (and result.baseline for {}).
+// Shared by the searches: the evaluated design `configuration` (every task known), whether
+// it replaces result.best (and result.baseline for {}), and its place in `ranking`.
 void consider_design(const DesignProblem &problem, const Configuration &configuration,
-                     std::vector<TaskExplicability> tasks, DesignResult &result);
+                     std::vector<TaskExplicability> tasks, DesignResult &result, Ranking &ranking);
+
+// The objective a design must not clearly exceed to become the best or enter `ranking`
+// (INF while either is still open).
+double ranking_limit(const DesignResult &result, const Ranking &ranking);
 
 DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
                            const DesignSearchOptions &options,

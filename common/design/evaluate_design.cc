@@ -1,5 +1,7 @@
 #include "design/evaluate_design.h"
 
+#include "design/ranking.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -53,7 +55,8 @@ DesignResult evaluate_design(const DesignProblem &problem, Evaluator &evaluator,
         for (auto &t : e.tasks)
             tasks.push_back(std::move(*t));
         DesignResult single; // consider_design() keeps the better; here each is its own
-        consider_design(problem, e.configuration, std::move(tasks), single);
+        Ranking unranked;
+        consider_design(problem, e.configuration, std::move(tasks), single, unranked);
         if (e.configuration == configuration)
             proposed = single.best;
         if (e.configuration.empty())

@@ -16,6 +16,7 @@ namespace {
 
 using witness::contains;
 using witness::Node;
+using witness::offer_cone_of;
 using witness::PooledPlan;
 using witness::raise_floor;
 using witness::Record;
@@ -63,8 +64,9 @@ public:
                   const DesignSearchOptions &options,
                   const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          index_(problem), bound_(problem, index_),
-          learner_(problem, evaluator, options, index_, bound_, result_, [this] { report(); }),
+          index_(problem), bound_(problem, index_), ranking_(options.ranking),
+          learner_(problem, evaluator, options, index_, bound_, result_, ranking_,
+                   [this] { report(); }),
           tasks_(static_cast<int>(problem.tasks.size())) {
         for (int m : bound_.always()) {
             const ModificationClass &c = index_.of(m);
@@ -114,6 +116,8 @@ public:
             least = std::max(least, learner_.lower_bound()); // both hold for every design
             result_.gap = result_.best ? std::max(0.0, result_.best->objective.value - least) : INF;
         }
+        if (options_.ranking > 0)
+            result_.ranking = ranking_.designs();
         auto &counters = result_.counters;
         counters.configurations_total = generated_ + learner_.designs();
         close_counters(counters, evaluator_, start);
@@ -127,7 +131,7 @@ private:
         std::vector<Node> batch;
         while (!open_.empty() &&
                static_cast<int>(batch.size()) < std::max(1, options_.batch_size)) {
-            if (result_.best && clearly_greater(open_.top().bound, result_.best->objective.value)) {
+            if (clearly_greater(open_.top().bound, ranking_limit(result_, ranking_))) {
                 skip(static_cast<long long>(open_.size())); // every other bound is larger
                 open_.clear();
                 break;
@@ -246,7 +250,10 @@ private:
             std::vector<TaskExplicability> copies;
             for (const auto *e : evaluations)
                 copies.push_back(*e);
-            consider_design(problem_, node.configuration, std::move(copies), result_);
+            consider_design(problem_, node.configuration, std::move(copies), result_, ranking_);
+            if (ranking_.size() > 1) // its cone may hold the next ones (docs: "Ranking")
+                offer_cone_of(problem_, bound_, node.configuration, node.tasks, max_size_,
+                              ranking_);
         }
         if (!blind(node)) {
             node.bound = bound_(node);
@@ -335,14 +342,15 @@ private:
     }
 
     // Whether a design of objective >= `bound` with at least `size` modifications could still
-    // rank before the best one.
+    // rank before the best one, or enter the ranking.
     bool can_win(double bound, std::size_t size) const {
         if (!result_.best)
             return true;
         double best = result_.best->objective.value;
         if (nearly_equal(bound, best))
-            return size <= result_.best->ranked.configuration.size();
-        return bound < best;
+            return size <= result_.best->ranked.configuration.size() ||
+                   ranking_.may_enter(bound, size);
+        return bound < best || ranking_.may_enter(bound, size);
     }
 
     void skip(long long count) {
@@ -371,6 +379,7 @@ private:
     TouchIndex index_;
     witness::SupersetBound bound_;
     DesignResult result_;
+    Ranking ranking_; // the N best (options.ranking)
     witness::DesignLearner learner_;
     int tasks_;
     int max_size_ = 0;
