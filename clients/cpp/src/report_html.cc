@@ -147,8 +147,8 @@ void crossing(ostream &out, const char *what, const envdesign::crossing_t &c) {
 void break_even_section(ostream &out, const envdesign::design_result_t &r) {
     const auto &b = r.explanation.break_even;
     out << "<h2>When would the answer change?</h2>\n<p>Among the " << b.designs_compared
-        << " designs evaluated in full (a design that was never evaluated may change the "
-           "answer sooner):</p><ul>\n";
+        << " designs whose every task was evaluated, by the search or for this page (a design "
+           "never evaluated may change the answer sooner):</p><ul>\n";
     crossing(out, "with fewer uses, at T =", b.horizon_down);
     crossing(out, "with more uses, at T =", b.horizon_up);
     if (!b.horizon_up.found)
@@ -210,7 +210,9 @@ std::string report_html(const envdesign::design_result_t &r, const std::string &
     out << "<h1>Environment design for " << h(title) << "</h1>\n";
     recommendation(out, r);
     breakdown(out, r);
-    figure(out, plots.cost_breakdown, "The weighted terms that add up to each objective.");
+    figure(out, plots.cost_breakdown,
+           "The weighted terms that add up to each objective: the chosen design, the empty design "
+           "and the next designs of the ranking below.");
     out << "<h2>Each task, before and after</h2>\n";
     for (std::size_t i = 0; i < r.tasks.size() && i < r.explanation.tasks.size(); ++i)
         task_section(out, r.tasks[i], r.explanation.tasks[i]);
@@ -223,7 +225,7 @@ std::string report_html(const envdesign::design_result_t &r, const std::string &
     figure(out, plots.objective_by_alpha,
            "Objective of the top designs against alpha (other weights as in the spec).");
     const auto &c = r.counters;
-    out << "<p class=muted>" << c.configurations_evaluated << " designs evaluated, "
+    out << "<p class=muted>The search evaluated " << c.configurations_evaluated << " designs, "
         << c.planner_runs << " planner runs, " << shown(c.seconds)
         << " s. Made by envdesign report; docs/result.md explains every number.</p>\n";
     out << "</body></html>\n";

@@ -81,8 +81,8 @@ std::string label(const envdesign::design_point_t &p) {
     return out;
 }
 
-const char *HEADER = "set terminal svg size 720,380 dynamic font 'sans,12' background '#ffffff'\n"
-                     "set key below noenhanced\n"
+const char *HEADER = "set terminal svg size 900,400 dynamic font 'sans,12' background '#ffffff'\n"
+                     "set key outside right top noenhanced\n"
                      "set grid\n";
 
 // The designs drawn: the ranking (or the chosen one), then the baseline if not among them.
@@ -166,6 +166,14 @@ std::string lines_plot(const envdesign::design_result_t &r, bool by_horizon) {
     return run_gnuplot(gp.str());
 }
 
+// The 1-based place of `p` in the ranking.
+std::size_t rank_of(const envdesign::design_result_t &r, const envdesign::design_point_t &p) {
+    for (std::size_t i = 0; i < r.ranking.size(); ++i)
+        if (r.ranking[i].design == p.design)
+            return i + 1;
+    return 0;
+}
+
 // Stacked bars: alpha * inexplicability, beta * design cost, kappa * robot cost.
 std::string breakdown_plot(const envdesign::design_result_t &r) {
     const auto &w = r.explanation;
@@ -175,7 +183,7 @@ std::string breakdown_plot(const envdesign::design_result_t &r) {
     for (const auto &p : r.ranking)
         if (p.design != r.design && !std::isnan(p.expected_ie) && bars.size() < 4 &&
             std::isfinite(p.terms.objective))
-            bars.push_back({"#" + std::to_string(bars.size()) + " " + label(p), p.terms});
+            bars.push_back({"rank " + std::to_string(rank_of(r, p)), p.terms});
     std::ostringstream gp;
     gp << HEADER;
     gp << "set style data histograms\nset style histogram rowstacked\n"
