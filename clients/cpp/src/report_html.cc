@@ -118,7 +118,10 @@ void task_section(ostream &out, const envdesign::task_result_t &t,
         plan_cell(out, e.expected_plan, t.plan, true);
     else
         out << "<td class=l>not solved</td>";
-    out << "</tr></table><p class=muted>Highlighted steps are not in &pi;.</p>\n";
+    out << "</tr></table><p class=muted>Highlighted steps are not in &pi;.";
+    if (t.has_human_optimal_cost && t.human_plan_cost == t.human_optimal_cost)
+        out << " &pi; costs observers what their expected plan costs: they find it just as good.";
+    out << "</p>\n";
 }
 
 void marginal_section(ostream &out, const envdesign::design_result_t &r) {

@@ -87,6 +87,10 @@ void task_block(std::ostream &out, const envdesign::task_result_t &t,
         diff_line(out, "pi vs robot's:", t.plan, e.robot_plan);
     if (e.has_expected_plan)
         diff_line(out, "pi vs expected:", t.plan, e.expected_plan);
+    if (e.has_expected_plan && t.has_human_optimal_cost &&
+        t.human_plan_cost == t.human_optimal_cost)
+        out << "    (pi costs observers what their expected plan costs: they find it just as "
+               "good)\n";
 }
 
 void marginal_block(std::ostream &out, const envdesign::design_result_t &r) {
