@@ -60,9 +60,10 @@ inline void expect_same_design(const nlohmann::json &got, const nlohmann::json &
     // marginal values (break-even's set of evaluated designs depends on the work's order).
     for (const char *key : {"weighted_terms", "least_inexplicability", "weights"})
         EXPECT_EQ(got.value(key, nlohmann::json()), want.value(key, nlohmann::json())) << key;
-    if (want.contains("explanation"))
+    if (want.contains("explanation")) {
         for (const char *key : {"tasks", "marginal"})
             EXPECT_EQ(got.at("explanation").at(key), want.at("explanation").at(key)) << key;
+    }
 }
 
 inline envdesign::design_request_t request_of(const std::string &spec_path, std::int64_t id) {
