@@ -140,9 +140,11 @@ void put_explanation(json &out, const envdesign::design_result_t &r) {
                       {"gamma", e.gamma}, {"horizon", e.horizon}, {"distance", e.distance}};
     out["weighted_terms"] = weighted_json(r.best, e);
     out["least_inexplicability"] = json_number(e.least_inexplicability);
-    if (r.has_baseline)
-        out["baseline"]["weighted_terms"] = weighted_json(r.baseline, e);
     out["explanation"] = explanation_json(r);
+    // Beside SPEC.md's "baseline", not in it: clients that print SPEC.md's fields (the
+    // Python client) stay equal to this one.
+    if (r.has_baseline)
+        out["explanation"]["baseline_weighted_terms"] = weighted_json(r.baseline, e);
 }
 
 } // namespace
