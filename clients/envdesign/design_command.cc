@@ -1,15 +1,19 @@
 #include "design_command.h"
 
+#include "cli_error.h"
+#include "design_warnings.h"
 #include "local_run.h"
 #include "result_format.h"
 
 #include "design/design_search.h"
+#include "design/design_spec.h"
 #include "design/progress.h"
 #include "design/relevance.h"
 
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
 
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -32,8 +36,13 @@ design::DesignSearchOptions search_options(const DesignFlags &flags,
     return options;
 }
 
-volatile std::sig_atomic_t interrupted = 0;
-void on_interrupt(int) { interrupted = 1; }
+// Set by SIGINT/SIGTERM only (a handler can reach nothing else); lock-free, so safe there.
+// A second Ctrl-C ends the process at once (a planner call may take long to return).
+std::atomic<bool> interrupted{false};
+extern "C" void on_interrupt(int signal) {
+    interrupted = true;
+    std::signal(signal, SIG_DFL);
+}
 
 // A client of the coordinator at `flags.connect`: the same search, run by the cluster.
 // Ctrl-C (or SIGTERM) cancels the request; the coordinator's best design so far is printed.
@@ -55,13 +64,14 @@ int run_design_remote(const DesignFlags &flags) {
     options.heuristic = flags.heuristic;
     options.key_file = flags.key_file;
     options.on_progress = client::stderr_progress();
-    options.stop_requested = [] { return interrupted != 0; };
+    options.stop_requested = [] { return interrupted.load(); };
+    std::vector<std::string> warnings = remote_spec_warnings(flags.spec);
+    print_warnings(warnings);
     client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
-    if (result.status == "error") {
-        std::cerr << result.error << std::endl;
-        return result.exit_code;
-    }
-    std::cout << (flags.json ? result.json + "\n" : result.text) << std::flush;
+    if (result.status == "error")
+        throw CommandError(result.exit_code, result.error);
+    std::cout << (flags.json ? with_warnings(result.json, warnings) + "\n" : result.text)
+              << std::flush;
     if (result.exit_code == 4)
         spdlog::warn("{}; the design is the best found",
                      interrupted ? "interrupted" : "the time limit stopped the search");
@@ -101,32 +111,47 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
 int run_design(const DesignFlags &flags) {
     if (!flags.connect.empty())
         return run_design_remote(flags);
-    std::optional<design::DesignProblem> problem = load_problem(flags.spec);
-    if (!problem)
-        return 2;
-    design::DesignSearchOptions options = search_options(flags, *problem);
-    LocalRun run(*problem, flags.workers, flags.heuristic);
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    design::DesignProblem problem = design::load_design_problem(flags.spec);
+    std::vector<std::string> warnings = problem.warnings;
+    print_warnings(warnings);
+    design::DesignSearchOptions options = search_options(flags, problem);
+    // Ctrl-C (or SIGTERM) stops the search as a time limit would: the best design so far.
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+    options.deadline = options.deadline.with_stop(&interrupted);
+    LocalRun run(problem, flags.workers, flags.heuristic);
     if (flags.prune == "relevant")
         options.relevant = [&](const design::Configuration &c) {
-            return design::relevant_modifications(*problem, c, run.local().planner(),
+            return design::relevant_modifications(problem, c, run.local().planner(),
                                                   options.deadline);
         };
     design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     design::DesignResult result;
-    envdesign::design_result_t message;
     try {
-        result = design::search_design(*problem, run.evaluator(), options,
+        result = design::search_design(problem, run.evaluator(), options,
                                        [&](const design::SearchProgress &p) { printer.update(p); });
-        printer.finish(result);
-        message = run.message(result, options.deadline);
-    } catch (const pddl::ParseError &e) { // a modified model that does not ground
-        std::cerr << "\n" << e.what() << std::endl;
-        return 2;
+    } catch (const pddl::ParseError &) { // a modified model that does not ground
+        std::cerr << "\n";
+        throw;
     }
-    std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
-              << std::flush;
+    printer.finish(result);
+    auto unsolvable = unsolvable_task_warnings(problem, result, run.local().planner(),
+                                               design::Deadline::in(10).with_stop(&interrupted));
+    print_warnings(unsolvable);
+    warnings.insert(warnings.end(), unsolvable.begin(), unsolvable.end());
+    envdesign::design_result_t message = run.message(result, options.deadline);
+    if (flags.json) {
+        nlohmann::json out = client::result_json_value(message);
+        if (!warnings.empty())
+            out["warnings"] = warnings;
+        std::cout << client::json_text(out) << std::endl;
+    } else {
+        std::cout << client::result_text(message) << std::flush;
+    }
     if (result.limit_reached)
-        spdlog::warn("the time limit stopped the search; the design is the best found");
+        spdlog::warn("{}; the design is the best found",
+                     interrupted ? "interrupted" : "the time limit stopped the search");
     return result.limit_reached ? 4 : 0;
 }
 

@@ -1,10 +1,11 @@
 #include "evaluate_command.h"
 
+#include "cli_error.h"
 #include "local_run.h"
 #include "result_format.h"
 
+#include "design/design_spec.h"
 #include "design/evaluate_design.h"
-#include "pddl/parse_error.h"
 
 #include <spdlog/spdlog.h>
 
@@ -49,28 +50,20 @@ void add_evaluate_flags(CLI::App &command, EvaluateFlags &flags) {
 }
 
 int run_evaluate(const EvaluateFlags &flags) {
-    std::optional<design::DesignProblem> problem = load_problem(flags.spec);
-    if (!problem)
-        return 2;
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    std::optional<design::DesignProblem> problem = design::load_design_problem(flags.spec);
     design::Configuration configuration;
     try {
         configuration = design::configuration_of(*problem, split_names(flags.design));
     } catch (const design::UnknownModification &e) {
-        std::cerr << "envdesign evaluate: error: --design: " << e.what() << std::endl;
-        return 2;
+        throw CommandError(2, std::string("--design: ") + e.what());
     }
     double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem->time_limit_s;
     design::Deadline deadline = design::Deadline::in(seconds);
     LocalRun run(*problem, flags.workers, flags.heuristic);
-    envdesign::design_result_t message;
-    try {
-        design::DesignResult result =
-            design::evaluate_design(*problem, run.evaluator(), configuration, deadline);
-        message = run.message(result, deadline);
-    } catch (const pddl::ParseError &e) { // a modified model that does not ground
-        std::cerr << e.what() << std::endl;
-        return 2;
-    }
+    design::DesignResult result =
+        design::evaluate_design(*problem, run.evaluator(), configuration, deadline);
+    envdesign::design_result_t message = run.message(result, deadline);
     message.status = "evaluated";
     std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
               << std::flush;

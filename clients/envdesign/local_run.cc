@@ -1,13 +1,10 @@
 #include "local_run.h"
 
 #include "cluster/result_message.h"
-#include "design/design_spec.h"
 #include "design/explanation.h"
 #include "heuristics/heuristic.h"
-#include "pddl/parse_error.h"
 
 #include <algorithm>
-#include <iostream>
 
 namespace envdesign::cli {
 namespace {
@@ -18,8 +15,13 @@ planning::PlannerOptions planner_options(const std::string &heuristic) {
     return options;
 }
 
+// The explanation evaluates a few designs the search may not have: within the search's time
+// limit, and at least a few seconds when the search used it up or was interrupted (Ctrl-C
+// prints soon, with what could be evaluated).
 design::Deadline explanation_deadline(const design::Deadline &search) {
     constexpr double AT_LEAST_S = 5;
+    if (search.expired())
+        return design::Deadline::in(AT_LEAST_S);
     if (!search.limited())
         return {};
     return design::Deadline::in(std::max(search.remaining_seconds(), AT_LEAST_S));
@@ -38,15 +40,6 @@ envdesign::design_result_t LocalRun::message(const design::DesignResult &result,
     design::Explanation why = design::explain(problem_, result, log_, &local_.planner(),
                                               explanation_deadline(search_deadline));
     return cluster::result_message(problem_, result, {}, &why);
-}
-
-std::optional<design::DesignProblem> load_problem(const std::string &path) {
-    try {
-        return design::load_design_problem(path);
-    } catch (const pddl::ParseError &e) {
-        std::cerr << e.what() << std::endl;
-        return std::nullopt;
-    }
 }
 
 } // namespace envdesign::cli

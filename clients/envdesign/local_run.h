@@ -33,7 +33,4 @@ private:
     design::EvaluationLog log_;
 };
 
-// The spec at `path`; prints the error and returns nullopt for bad input.
-std::optional<design::DesignProblem> load_problem(const std::string &path);
-
 } // namespace envdesign::cli

@@ -1,8 +1,10 @@
 #include "report_command.h"
 
+#include "cli_error.h"
 #include "local_run.h"
 #include "report_html.h"
 
+#include "design/design_spec.h"
 #include "design/progress.h"
 #include "pddl/parse_error.h"
 
@@ -29,9 +31,8 @@ void add_report_flags(CLI::App &command, ReportFlags &flags) {
 }
 
 int run_report(const ReportFlags &flags) {
-    std::optional<design::DesignProblem> problem = load_problem(flags.spec);
-    if (!problem)
-        return 2;
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    std::optional<design::DesignProblem> problem = design::load_design_problem(flags.spec);
     design::DesignSearchOptions options;
     options.max_design_size = problem->max_design_size;
     double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem->time_limit_s;
@@ -47,23 +48,24 @@ int run_report(const ReportFlags &flags) {
                                   [&](const design::SearchProgress &p) { printer.update(p); });
         printer.finish(result);
         message = run.message(result, options.deadline);
-    } catch (const pddl::ParseError &e) {
-        std::cerr << "\n" << e.what() << std::endl;
-        return 2;
+    } catch (const pddl::ParseError &) { // a modified model that does not ground
+        std::cerr << "\n";
+        throw;
     }
-    if (!message.has_design || !message.has_explanation) {
-        spdlog::error("no design was evaluated in time: nothing to report");
-        return 4;
-    }
+    if (!message.has_design || !message.has_explanation)
+        throw CommandError(4, "no design was evaluated in time: nothing to report");
     std::string title = std::filesystem::path(flags.spec).filename().string();
-    std::string page = client::report_html(message, title); // PlotError: exit 1 in main
+    std::string page;
+    try {
+        page = client::report_html(message, title);
+    } catch (const client::PlotError &e) {
+        throw CommandError(1, e.what());
+    }
     std::ofstream file(flags.output, std::ios::binary);
     file << page;
     file.close();
-    if (!file) {
-        spdlog::error("cannot write {}", flags.output);
-        return 1;
-    }
+    if (!file)
+        throw CommandError(1, "cannot write " + flags.output);
     spdlog::info("wrote {} ({} bytes): {}", flags.output, page.size(),
                  message.status == "optimal" ? "the optimal design" : "the best design found");
     return message.limit_reached ? 4 : 0;

@@ -3,11 +3,13 @@
 #include "bus/channels.h"
 #include "bus/log.h"
 
+#include <envdesign/version.h>
+
 #include <algorithm>
 
 namespace envdesign::bus {
 
-std::string version() { return ENVDESIGN_VERSION; }
+std::string version() { return envdesign::VERSION; }
 
 void add_drop(envdesign::service_status_t &status, const std::string &channel,
               const std::string &reason, long long count) {

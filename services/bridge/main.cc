@@ -8,6 +8,8 @@
 #include "service_main.h"
 #include "store/state_dir.h"
 
+#include <envdesign/version.h>
+
 #include <iostream>
 
 namespace {
@@ -117,6 +119,7 @@ int main(int argc, char **argv) {
     CLI::App app{"envdesign-bridge: task arrivals (DDS) -> task distribution and designs (LCM)"};
     services::CommonFlags common;
     services::add_common_flags(app, common);
+    app.set_version_flag("--version", version_line("envdesign-bridge"));
     Flags flags;
     bridge::BridgeConfig config;
     add_flags(app, flags, config);

@@ -4,11 +4,14 @@
 #include "cluster/spec_loader.h"
 #include "service_main.h"
 
+#include <envdesign/version.h>
+
 int main(int argc, char **argv) {
     using namespace envdesign;
     CLI::App app{"envdesign-coordinator: design requests in, progress and results out"};
     services::CommonFlags common;
     services::add_common_flags(app, common);
+    app.set_version_flag("--version", version_line("envdesign-coordinator"));
     cluster::CoordinatorConfig config;
     config.work_dir = cluster::default_work_dir();
     app.add_option("--max-requests", config.max_active, "requests searched at once")
