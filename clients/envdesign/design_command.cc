@@ -49,16 +49,12 @@ extern "C" void on_interrupt(int signal) {
 int run_design_remote(const DesignFlags &flags) {
     if (flags.workers != 1)
         spdlog::warn("--workers does not apply with --connect: the cluster's planners work");
-    if (flags.ranking > 0) { // the request message carries no ranking yet
-        std::cerr << "--ranking: not available with --connect yet; run without --connect"
-                  << std::endl;
-        return 2;
-    }
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     client::Options options;
     options.time_limit_s = flags.time_limit_s;
     options.max_design_size = flags.max_design_size;
+    options.ranking = flags.ranking;
     options.prune = flags.prune;
     options.search = flags.search;
     options.heuristic = flags.heuristic;

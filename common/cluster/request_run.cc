@@ -183,6 +183,7 @@ design::DesignSearchOptions RequestRun::options(const design::DesignProblem &pro
     design::DesignSearchOptions options;
     options.max_design_size =
         request_.max_design_size >= 0 ? request_.max_design_size : problem.max_design_size;
+    options.ranking = request_.ranking;
     double seconds = request_.time_limit_s >= 0 ? request_.time_limit_s : problem.time_limit_s;
     options.deadline = design::Deadline::in(seconds);
     options.batch_size = std::max(8, 4 * context_.router.pool().capacity());
