@@ -112,6 +112,10 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     if (t.human_plan)
         e.human_plan = *t.human_plan;
     e.human_plan_length = static_cast<std::int16_t>(e.human_plan.size());
+    e.has_optimal_actions = t.optimal_actions.has_value();
+    if (t.optimal_actions)
+        e.optimal_actions = *t.optimal_actions;
+    e.optimal_actions_length = static_cast<std::int32_t>(e.optimal_actions.size());
 }
 
 void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
@@ -142,6 +146,8 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
     t.plan = e.plan;
     if (e.has_human_plan)
         t.human_plan = e.human_plan;
+    if (e.has_optimal_actions)
+        t.optimal_actions = e.optimal_actions;
     return answer;
 }
 

@@ -19,6 +19,9 @@ namespace envdesign::design {
 
 enum class Distance { EXP_COST_DIFF, COST_DIFF };
 
+// What the robot does in a task (SPEC.md): EXPLICABLE is the paper's setting.
+enum class RobotBehaviour { EXPLICABLE, COST_OPTIMAL, COST_OPTIMAL_BEST_CASE, EXPLAINING };
+
 struct ObjectiveWeights {
     double alpha = 1; // weight of f_T(E[IE])
     double beta = 1;  // weight of the design cost C(xi)
@@ -26,6 +29,8 @@ struct ObjectiveWeights {
     double gamma = 1; // discount of inexplicability over the horizon, in [0, 1]
     int horizon = 1;  // T
     Distance distance = Distance::EXP_COST_DIFF;
+    RobotBehaviour behaviour = RobotBehaviour::EXPLICABLE;
+    double explanation_cost = 1; // EXPLAINING: per model difference, per repetition
 };
 
 struct DesignTask {

@@ -15,6 +15,19 @@ namespace {
 using pddl::ParseError;
 namespace fs = std::filesystem;
 
+RobotBehaviour behaviour_from_proto(proto::DesignProblem::RobotBehaviour behaviour) {
+    switch (behaviour) {
+    case proto::DesignProblem::COST_OPTIMAL:
+        return RobotBehaviour::COST_OPTIMAL;
+    case proto::DesignProblem::COST_OPTIMAL_BEST_CASE:
+        return RobotBehaviour::COST_OPTIMAL_BEST_CASE;
+    case proto::DesignProblem::EXPLAINING:
+        return RobotBehaviour::EXPLAINING;
+    default:
+        return RobotBehaviour::EXPLICABLE;
+    }
+}
+
 class Loader {
 public:
     explicit Loader(const SpecFile &spec) : spec_(spec), m_(spec.message) {}
@@ -129,6 +142,14 @@ private:
             fail("horizon", "horizon must be at least 1");
         w.distance = m_.distance() == proto::DesignProblem::COST_DIFF ? Distance::COST_DIFF
                                                                       : Distance::EXP_COST_DIFF;
+        w.behaviour = behaviour_from_proto(m_.robot_behaviour());
+        w.explanation_cost =
+            weight(m_.has_explanation_cost(), m_.explanation_cost(), 1, "explanation_cost");
+        if (w.behaviour == RobotBehaviour::EXPLAINING)
+            fail("robot_behaviour",
+                 "robot_behaviour " +
+                     proto::DesignProblem::RobotBehaviour_Name(m_.robot_behaviour()) +
+                     " is not supported by this build yet");
         if (m_.max_design_size() < 0)
             fail("max_design_size", "max_design_size must be >= 0");
         problem_.max_design_size = m_.max_design_size();

@@ -58,6 +58,7 @@ public:
         return list;
     }
     bool ok() const { return ok_ && at_ == in_.size(); }
+    bool at_end() const { return at_ == in_.size(); }
 
 private:
     bool need(std::uint64_t n) {
@@ -108,6 +109,10 @@ std::string encode_evaluation(const TaskExplicability &e) {
     w.texts(e.plan);
     w.byte(e.human_plan ? 1 : 0);
     w.texts(e.human_plan.value_or(std::vector<std::string>{}));
+    if (e.optimal_actions) { // COST_OPTIMAL modes only: records of the others stay as they were
+        w.byte(1);
+        w.texts(*e.optimal_actions);
+    }
     return w.take();
 }
 
@@ -132,6 +137,11 @@ std::optional<TaskExplicability> decode_evaluation(const std::string &bytes) {
     auto human_plan = r.texts();
     if (has_human_plan)
         e.human_plan = std::move(human_plan);
+    if (!r.at_end()) { // optional, appended by COST_OPTIMAL modes
+        if (r.byte() != 1)
+            return std::nullopt;
+        e.optimal_actions = r.texts();
+    }
     if (!r.ok())
         return std::nullopt;
     return e;

@@ -13,7 +13,8 @@ TaskKey store_key(const DesignProblem &problem) {
     text << "envdesign store key " << RECORD_VERSION << '\n'
          << lifted_text(problem.robot_domain, {}) << "\n--\n"
          << lifted_text(problem.human_domain, {}) << "\n--\n"
-         << static_cast<int>(problem.weights.distance) << '\n';
+         << static_cast<int>(problem.weights.distance) << ' '
+         << static_cast<int>(problem.weights.behaviour) << '\n';
     for (const auto &m : problem.modifications) {
         text << m.edits.size() << ':';
         for (const auto &e : m.edits)

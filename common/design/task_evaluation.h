@@ -32,6 +32,11 @@ struct TaskExplicability {
     // An optimal plan of P_H when one was found and kept; unset: not known (P_H unsolved,
     // or the evaluation came from somewhere that did not keep it).
     std::optional<std::vector<std::string>> human_plan;
+    // COST_OPTIMAL and COST_OPTIMAL_BEST_CASE: every ground action of some cost-optimal plan
+    // of P_R, sorted, unique. These are the evaluation's robot witnesses there (all optimal
+    // plans count, not only `plan`): a restricting modification touching none of them keeps
+    // the set of optimal plans (witness.h). Unset: not known.
+    std::optional<std::vector<std::string>> optimal_actions;
 };
 
 } // namespace envdesign::design

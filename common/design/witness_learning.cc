@@ -136,13 +136,15 @@ void DesignLearner::consider(const Configuration &design, const std::vector<Reco
 
 // The relaxation of hitting_set.h holds when every modification is restricting and of
 // non-negative cost (no modification is added everywhere), the weights are non-negative
-// and the empty design's objective is finite (its floors are known).
+// and the empty design's objective is finite (its floors are known). Its floors are floors on
+// the most explicable plan's human cost, so it applies to EXPLICABLE robots only
+// (witness_bound.h: floors_hold).
 bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
-    return options_.hitting_sets && root_ && result_.best &&
-           std::isfinite(result_.best->objective.value) && bound_.always().empty() &&
-           w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 && result_.baseline &&
-           std::isfinite(result_.baseline->objective.value);
+    return options_.hitting_sets && w.behaviour == RobotBehaviour::EXPLICABLE && root_ &&
+           result_.best && std::isfinite(result_.best->objective.value) &&
+           bound_.always().empty() && w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 &&
+           result_.baseline && std::isfinite(result_.baseline->objective.value);
 }
 
 bool DesignLearner::prove_by_hitting_sets() {

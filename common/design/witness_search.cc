@@ -1,5 +1,6 @@
 #include "design/witness_search.h"
 
+#include "design/cost_optimal.h"
 #include "design/witness_bound.h"
 #include "design/witness_learning.h"
 
@@ -76,6 +77,12 @@ public:
                 (c.restricting ? "has a negative cost" : "is not restricting (" + c.why_not + ")") +
                 ": added to every configuration");
         }
+        if (is_cost_optimal(problem.weights.behaviour))
+            result_.notes.push_back(
+                "robot_behaviour " + behaviour_name(problem.weights.behaviour) +
+                ": the witnesses are the worst (best) optimal plan and, for a finite worst case, "
+                "every action of every optimal plan; the IE term is bounded by its least "
+                "value, and there is no hitting-set phase (docs/design-search.md)");
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
     }
 

@@ -62,6 +62,16 @@ int main(int argc, char **argv) {
     app.add_flag("--state-fsync", config.state_sync,
                  "fsync the evaluation file at every record (survives power loss, not only a "
                  "killed process; slower)");
+    config.election.discovery_s = 1.5; // hear the other coordinators' statuses (1 Hz) first
+    app.add_option("--discovery", config.election.discovery_s,
+                   "seconds after start spent listening for other coordinators before "
+                   "running requests")
+        ->check(CLI::Range(0.0, 60.0))
+        ->capture_default_str();
+    app.add_option("--takeover-after", config.election.takeover_after_s,
+                   "standby: seconds of silence from the active coordinator before taking over")
+        ->check(CLI::Range(1.5, 3600.0))
+        ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))

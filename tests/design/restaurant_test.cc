@@ -166,5 +166,35 @@ TEST(Restaurant, RankingOfTheSixBestByHand) {
     }
 }
 
+// The robot that will not bend (COST_OPTIMAL) and its optimistic twin (issue 14). Serving
+// either booth, the robot has one optimal plan (pick-up, the moves by the gap, put-down), and
+// it is the most explicable plan too: the worst, the best and the explicable plan coincide,
+// so in every setting all three behaviours choose the same design at the same objective
+// (docs/behaviours.md). The spec file d- says COST_OPTIMAL itself.
+TEST(Restaurant, CostOptimalRobotsGetThePapersAnswersHere) {
+    for (const char *spec : {"a-one-task-t1", "b-two-tasks-t1", "c-two-tasks-t10"}) {
+        DesignProblem problem = load_design_problem(DIR + spec + ".textproto");
+        DesignResult explicable = run(problem);
+        for (auto behaviour :
+             {RobotBehaviour::COST_OPTIMAL, RobotBehaviour::COST_OPTIMAL_BEST_CASE}) {
+            SCOPED_TRACE(std::string(spec) + " " + std::to_string(int(behaviour)));
+            problem.weights.behaviour = behaviour;
+            DesignResult r = run(problem);
+            EXPECT_TRUE(r.optimal);
+            EXPECT_EQ(r.best->ranked.configuration, explicable.best->ranked.configuration);
+            EXPECT_NEAR(r.best->objective.value, explicable.best->objective.value, 1e-9);
+            EXPECT_NEAR(r.baseline->objective.value, explicable.baseline->objective.value, 1e-9);
+            for (std::size_t t = 0; t < r.best->tasks.size(); ++t)
+                EXPECT_EQ(r.best->tasks[t].plan, explicable.best->tasks[t].plan);
+        }
+    }
+    DesignProblem d = load_design_problem(DIR + "d-cost-optimal-t10.textproto");
+    EXPECT_EQ(d.weights.behaviour, RobotBehaviour::COST_OPTIMAL);
+    DesignResult r = run(d);
+    EXPECT_EQ(design_names(d, r.best->ranked.configuration),
+              (std::vector<std::string>{"barrier-00-01", "barrier-10-11"}));
+    EXPECT_NEAR(r.best->objective.value, 85.263215599, 1e-6);
+}
+
 } // namespace
 } // namespace envdesign::design

@@ -12,10 +12,6 @@
 
 namespace envdesign::bridge {
 
-// ENVDESIGN_TASK_DISTRIBUTION: estimates; ENVDESIGN_REEVALUATE: requests (same type).
-inline constexpr const char *TASK_DISTRIBUTION = bus::TASK_DISTRIBUTION;
-inline constexpr const char *REEVALUATE = bus::REEVALUATE;
-
 // The design in force for a problem, as the bridge last heard it.
 struct DesignInForce {
     std::vector<std::string> design; // modification names
