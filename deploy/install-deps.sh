@@ -16,7 +16,8 @@ PACKAGES=(
     libsqlite3-dev libssl-dev  # the coordinator's durable evaluations (common/store)
     python3-setuptools python3-wheel python3-venv python3-pip  # pip install clients/python
     libsystemd-dev  # sd_notify: Type=notify units with a watchdog (common/service/systemd_notify.h)
-    gnuplot-nox  # the interplay plot of tests/benchmarks/paper/run_interplay.py
+    gnuplot-nox  # the interplay plot (tests/benchmarks/paper), the plots of envdesign report
+    chromium  # tests/cli/report_test.py renders the report headless
     clang libclang-rt-14-dev  # tests/fuzz: libFuzzer, ASan and UBSan runtimes; the clang build
 )
 

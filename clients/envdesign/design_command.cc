@@ -2,13 +2,13 @@
 
 #include "cli_error.h"
 #include "design_warnings.h"
+#include "local_run.h"
+#include "result_format.h"
 
 #include "design/design_search.h"
 #include "design/design_spec.h"
-#include "design/local_evaluator.h"
 #include "design/progress.h"
 #include "design/relevance.h"
-#include "design/result_json.h"
 
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
@@ -21,44 +21,6 @@
 
 namespace envdesign::cli {
 namespace {
-
-std::string number(double value) { return design::json_number(value).dump(); }
-
-void print_terms(const std::string &label, const design::EvaluatedDesign &d) {
-    const auto &t = d.objective.terms;
-    std::cout << label << number(d.objective.value) << " (inexplicability "
-              << number(t.inexplicability) << ", design cost " << number(t.design_cost)
-              << ", robot cost " << number(t.robot_cost) << ")\n";
-}
-
-void print_text(const design::DesignProblem &problem, const design::DesignResult &result) {
-    std::cout << "status: " << (result.optimal ? "optimal" : "best_found") << "\n";
-    if (!result.best) {
-        std::cout << "no configuration was evaluated in time\n";
-        return;
-    }
-    std::cout << "design: " << design::to_string(problem, result.best->ranked.configuration)
-              << "\n";
-    print_terms("objective: ", *result.best);
-    if (result.baseline)
-        print_terms("baseline: ", *result.baseline);
-    for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
-        const auto &t = result.best->tasks[i];
-        std::cout << "task " << problem.tasks[i].name << ": ie " << number(t.ie) << ", robot cost "
-                  << number(t.robot_cost) << ", plan";
-        for (const auto &step : t.plan)
-            std::cout << " " << step;
-        std::cout << "\n";
-    }
-    for (std::size_t i = 0; i < result.ranking.size(); ++i)
-        std::cout << "rank " << i + 1 << ": "
-                  << design::to_string(problem, result.ranking[i].configuration) << " objective "
-                  << number(result.ranking[i].objective) << "\n";
-    if (result.gap)
-        std::cout << "proven gap: " << number(*result.gap) << "\n";
-    for (const auto &note : result.notes)
-        std::cout << "note: " << note << "\n";
-}
 
 design::DesignSearchOptions search_options(const DesignFlags &flags,
                                            const design::DesignProblem &problem) {
@@ -87,16 +49,12 @@ extern "C" void on_interrupt(int signal) {
 int run_design_remote(const DesignFlags &flags) {
     if (flags.workers != 1)
         spdlog::warn("--workers does not apply with --connect: the cluster's planners work");
-    if (flags.ranking > 0) { // the request message carries no ranking yet
-        std::cerr << "--ranking: not available with --connect yet; run without --connect"
-                  << std::endl;
-        return 2;
-    }
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     client::Options options;
     options.time_limit_s = flags.time_limit_s;
     options.max_design_size = flags.max_design_size;
+    options.ranking = flags.ranking;
     options.prune = flags.prune;
     options.search = flags.search;
     options.heuristic = flags.heuristic;
@@ -158,35 +116,35 @@ int run_design(const DesignFlags &flags) {
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     options.deadline = options.deadline.with_stop(&interrupted);
-    planning::PlannerOptions planner;
-    planner.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
-    design::LocalEvaluator evaluator(problem, flags.workers, planner);
+    LocalRun run(problem, flags.workers, flags.heuristic);
     if (flags.prune == "relevant")
         options.relevant = [&](const design::Configuration &c) {
-            return design::relevant_modifications(problem, c, evaluator.planner(),
+            return design::relevant_modifications(problem, c, run.local().planner(),
                                                   options.deadline);
         };
     design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     design::DesignResult result;
     try {
-        result = design::search_design(problem, evaluator, options,
+        result = design::search_design(problem, run.evaluator(), options,
                                        [&](const design::SearchProgress &p) { printer.update(p); });
     } catch (const pddl::ParseError &) { // a modified model that does not ground
         std::cerr << "\n";
         throw;
     }
     printer.finish(result);
-    auto unsolvable = unsolvable_task_warnings(problem, result, evaluator.planner(),
+    auto unsolvable = unsolvable_task_warnings(problem, result, run.local().planner(),
                                                design::Deadline::in(10).with_stop(&interrupted));
     print_warnings(unsolvable);
     warnings.insert(warnings.end(), unsolvable.begin(), unsolvable.end());
+    envdesign::design_result_t message = run.message(result, options.deadline);
     if (flags.json) {
-        nlohmann::json out = design::design_json(problem, result);
+        nlohmann::json out = client::result_json_value(message);
         if (!warnings.empty())
             out["warnings"] = warnings;
-        std::cout << design::json_text(out) << std::endl;
-    } else
-        print_text(problem, result);
+        std::cout << client::json_text(out) << std::endl;
+    } else {
+        std::cout << client::result_text(message) << std::flush;
+    }
     if (result.limit_reached)
         spdlog::warn("{}; the design is the best found",
                      interrupted ? "interrupted" : "the time limit stopped the search");

@@ -1,8 +1,8 @@
 #include "explicable_command.h"
 
 #include "design/explicability.h"
-#include "design/result_json.h"
 #include "pddl/parser.h"
+#include "result_format.h"
 
 #include <iostream>
 
@@ -21,7 +21,29 @@ design::ModelPair load_models(const ExplicableFlags &flags) {
     return models;
 }
 
-std::string number(std::optional<double> value) { return design::json_number(value).dump(); }
+std::string number(std::optional<double> value) { return client::json_number(value).dump(); }
+
+std::string status_name(design::ExplicabilityStatus status) {
+    switch (status) {
+    case design::ExplicabilityStatus::SOLVED:
+        return "solved";
+    case design::ExplicabilityStatus::INEXPLICABLE:
+        return "unsolvable";
+    default:
+        return "limit";
+    }
+}
+
+// SPEC.md: {"status", "plan", "ie", "robot_cost", "human_plan_cost", "human_optimal_cost"}
+nlohmann::json explicability_json(const design::TaskExplicability &r) {
+    bool limit = r.status == design::ExplicabilityStatus::LIMIT;
+    return {{"status", status_name(r.status)},
+            {"plan", r.plan},
+            {"ie", limit ? nlohmann::json() : client::json_number(r.ie)},
+            {"robot_cost", client::json_number(r.robot_cost)},
+            {"human_plan_cost", client::json_number(r.human_plan_cost)},
+            {"human_optimal_cost", client::json_number(r.human_optimal_cost)}};
+}
 
 void print_text(const design::TaskExplicability &r) {
     for (const auto &step : r.plan)
@@ -62,7 +84,7 @@ int run_explicable(const ExplicableFlags &flags) {
     design::TaskExplicability result = design::evaluate_explicability(
         models, distance, planner, design::Deadline::in(flags.time_limit_s), true);
     if (flags.json)
-        std::cout << design::json_text(design::explicability_json(result)) << std::endl;
+        std::cout << client::json_text(explicability_json(result)) << std::endl;
     else
         print_text(result);
     switch (result.status) {

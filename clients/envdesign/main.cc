@@ -3,8 +3,10 @@
 
 #include "cli_error.h"
 #include "design_command.h"
+#include "evaluate_command.h"
 #include "explicable_command.h"
 #include "plan_command.h"
+#include "report_command.h"
 #include "status_command.h"
 #include "validate_command.h"
 #include "watch_command.h"
@@ -72,6 +74,16 @@ int main(int argc, char **argv) {
     auto *design = app.add_subcommand("design", "optimal environment design of a design problem");
     envdesign::cli::add_design_flags(*design, design_flags);
 
+    envdesign::cli::EvaluateFlags evaluate_flags;
+    auto *evaluate =
+        app.add_subcommand("evaluate", "a proposed design, explained as `design` does");
+    envdesign::cli::add_evaluate_flags(*evaluate, evaluate_flags);
+
+    envdesign::cli::ReportFlags report_flags;
+    auto *report =
+        app.add_subcommand("report", "an HTML page of the design (plots, plans, ranking)");
+    envdesign::cli::add_report_flags(*report, report_flags);
+
     envdesign::cli::StatusFlags status_flags;
     auto *status =
         app.add_subcommand("status", "the services on a bus (coordinator, planners, bridges)");
@@ -104,6 +116,10 @@ int main(int argc, char **argv) {
             return with_output_checked(envdesign::cli::run_explicable(explicable_flags));
         if (*design)
             return with_output_checked(envdesign::cli::run_design(design_flags));
+        if (*evaluate)
+            return with_output_checked(envdesign::cli::run_evaluate(evaluate_flags));
+        if (*report)
+            return with_output_checked(envdesign::cli::run_report(report_flags));
         if (*status)
             return with_output_checked(envdesign::cli::run_status(status_flags));
         if (*watch)

@@ -2,9 +2,9 @@
 
 #include "cli_error.h"
 
-#include "design/result_json.h"
 #include "pddl/parse_error.h"
 #include "planning/planner.h"
+#include "result_format.h"
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -71,7 +71,7 @@ void print_json(const planning::PlanReport &report) {
                           {"bytes_per_state", report.statistics.bytes_per_state}};
     if (report.status != search::SearchStatus::SOLVED)
         out["cost"] = nullptr;
-    std::cout << design::json_text(out) << std::endl;
+    std::cout << client::json_text(out) << std::endl;
 }
 
 } // namespace

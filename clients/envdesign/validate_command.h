@@ -17,4 +17,4 @@ struct ValidateFlags {
 void add_validate_flags(CLI::App &command, ValidateFlags &flags);
 int run_validate(const ValidateFlags &flags);
 
-}  // namespace envdesign::cli
+} // namespace envdesign::cli

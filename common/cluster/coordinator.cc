@@ -23,6 +23,8 @@ std::size_t spec_bytes(const envdesign::spec_t &spec) {
     return bytes;
 }
 
+constexpr int MOST_RANKED = 100000; // as `envdesign design --ranking`
+
 // Why `r` cannot be served (nullopt: it can).
 std::optional<std::string> request_problem(const design_request_t &r, std::size_t max_spec_bytes) {
     if (r.search != design_request_t::SEARCH_WITNESS &&
@@ -33,6 +35,9 @@ std::optional<std::string> request_problem(const design_request_t &r, std::size_
     if (r.heuristic < design_request_t::HEURISTIC_LMCUT ||
         r.heuristic > design_request_t::HEURISTIC_BLIND)
         return "unknown heuristic " + std::to_string(r.heuristic);
+    if (r.ranking < 0 || r.ranking > MOST_RANKED)
+        return "ranking " + std::to_string(r.ranking) + " is not in 0.." +
+               std::to_string(MOST_RANKED);
     if (std::isnan(r.time_limit_s) || std::isinf(r.time_limit_s))
         return "the time limit is not a number";
     if (r.spec.name.empty())

@@ -7,10 +7,13 @@
 #include "cluster/spec_chunks.h"
 #include "cluster/spec_loader.h"
 #include "cluster/wire.h"
+#include "design/evaluation_log.h"
+#include "design/explanation.h"
 #include "design/relevance.h"
 #include "design/stored_evaluator.h"
 #include "pddl/parse_error.h"
 
+#include <algorithm>
 #include <optional>
 
 namespace envdesign::cluster {
@@ -18,6 +21,16 @@ namespace {
 
 using envdesign::design_progress_t;
 using envdesign::design_request_t;
+
+// The explanation evaluates a few designs the search may not have (the chosen design minus
+// one modification): within the search's deadline, and at least a few seconds past it so
+// that a search stopped by its limit is still explained.
+design::Deadline explanation_deadline(const design::Deadline &search) {
+    constexpr double AT_LEAST_S = 5;
+    if (!search.limited())
+        return {};
+    return design::Deadline::in(std::max(search.remaining_seconds(), AT_LEAST_S));
+}
 
 } // namespace
 
@@ -134,10 +147,15 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
             else if (a.job.kind == design::JobKind::EXPLICABILITY)
                 stored->keep_task(c, a.job.task, a.explicability);
         });
-    design::Evaluator &searched = stored ? static_cast<design::Evaluator &>(*stored) : evaluator;
+    design::Evaluator &inner = stored ? static_cast<design::Evaluator &>(*stored) : evaluator;
+    design::EvaluationLog searched(problem, inner); // kept for the explanation's break-even
     design::DesignResult result;
+    std::optional<design::Explanation> explanation;
     try {
         result = design::search_design(problem, searched, options, on_progress);
+        if (result.best && !cancelled_)
+            explanation = design::explain(problem, result, searched, &relevance_cache,
+                                          explanation_deadline(options.deadline));
     } catch (...) {
         std::lock_guard lock(mutex_);
         evaluator_ = nullptr;
@@ -158,13 +176,14 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     transport.stored_answers = stored ? stored->stored_answers() : 0;
     if (context_.stores)
         context_.stores->trim();
-    finish(result_message(problem, result, transport));
+    finish(result_message(problem, result, transport, explanation ? &*explanation : nullptr));
 }
 
 design::DesignSearchOptions RequestRun::options(const design::DesignProblem &problem) const {
     design::DesignSearchOptions options;
     options.max_design_size =
         request_.max_design_size >= 0 ? request_.max_design_size : problem.max_design_size;
+    options.ranking = request_.ranking;
     double seconds = request_.time_limit_s >= 0 ? request_.time_limit_s : problem.time_limit_s;
     options.deadline = design::Deadline::in(seconds);
     options.batch_size = std::max(8, 4 * context_.router.pool().capacity());

@@ -13,15 +13,6 @@ using envdesign::evaluation_t;
 
 bool valid_cost(double v) { return !std::isnan(v) && v >= 0; } // +inf allowed
 
-envdesign::design_terms_t terms_message(const design::Objective &objective) {
-    envdesign::design_terms_t t;
-    t.objective = objective.value;
-    t.inexplicability = objective.terms.inexplicability;
-    t.design_cost = objective.terms.design_cost;
-    t.robot_cost = objective.terms.robot_cost;
-    return t;
-}
-
 // The fields task_result_t and evaluation_t share.
 template <typename Message>
 void put_costs_and_plan(const design::TaskExplicability &t, Message &m) {
@@ -32,41 +23,6 @@ void put_costs_and_plan(const design::TaskExplicability &t, Message &m) {
     m.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
     m.plan = t.plan;
     m.plan_length = static_cast<std::int16_t>(m.plan.size());
-}
-
-envdesign::task_result_t task_message(const design::DesignTask &task,
-                                      const design::TaskExplicability &t) {
-    envdesign::task_result_t m;
-    m.name = task.name;
-    m.probability = task.probability;
-    put_costs_and_plan(t, m);
-    return m;
-}
-
-envdesign::design_counters_t counters_message(const design::DesignCounters &c,
-                                              const TransportCounters &transport) {
-    envdesign::design_counters_t m;
-    m.configurations_total = c.configurations_total;
-    m.configurations_evaluated = c.configurations_evaluated;
-    m.configurations_abandoned = c.configurations_abandoned;
-    m.configurations_skipped = c.configurations_skipped;
-    m.configurations_pruned = c.configurations_pruned;
-    m.tasks_inherited = c.tasks_inherited;
-    m.configurations_probed = c.configurations_probed;
-    m.task_evaluations = c.evaluator.task_evaluations;
-    m.planner_runs = c.evaluator.planner_runs;
-    m.cache_hits = c.evaluator.cache_hits;
-    m.groundings_skipped = c.evaluator.groundings_skipped;
-    m.planner_seconds = c.evaluator.planner_seconds;
-    m.seconds = c.seconds;
-    m.jobs_sent = transport.jobs_sent;
-    m.jobs_resent = transport.jobs_resent;
-    m.duplicates_ignored = transport.duplicates_ignored;
-    m.planners_used = static_cast<std::int16_t>(transport.planners_used);
-    m.transport_seconds = transport.transport_seconds;
-    m.job_seconds = transport.job_seconds;
-    m.stored_answers = transport.stored_answers;
-    return m;
 }
 
 } // namespace
@@ -193,41 +149,6 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
     if (e.has_optimal_actions)
         t.optimal_actions = e.optimal_actions;
     return answer;
-}
-
-envdesign::design_result_t result_message(const design::DesignProblem &problem,
-                                          const design::DesignResult &result,
-                                          const TransportCounters &transport) {
-    envdesign::design_result_t m{};
-    m.exit_code = result.limit_reached ? 4 : 0;
-    m.status = result.optimal ? "optimal" : "best_found";
-    m.has_design = result.best.has_value();
-    if (result.best) {
-        m.design = design::design_names(problem, result.best->ranked.configuration);
-        m.design_size = static_cast<std::int16_t>(m.design.size());
-        m.best = terms_message(result.best->objective);
-        for (std::size_t i = 0; i < result.best->tasks.size(); ++i)
-            m.tasks.push_back(task_message(problem.tasks[i], result.best->tasks[i]));
-        m.num_tasks = static_cast<std::int16_t>(m.tasks.size());
-    }
-    m.has_baseline = result.baseline.has_value();
-    if (result.baseline)
-        m.baseline = terms_message(result.baseline->objective);
-    m.counters = counters_message(result.counters, transport);
-    m.limit_reached = result.limit_reached;
-    m.has_gap = result.gap.has_value();
-    m.gap = result.gap.value_or(0);
-    m.notes = result.notes;
-    m.num_notes = static_cast<std::int16_t>(m.notes.size());
-    return m;
-}
-
-envdesign::design_result_t error_result(int exit_code, const std::string &message) {
-    envdesign::design_result_t m{};
-    m.exit_code = static_cast<std::int8_t>(exit_code);
-    m.status = "error";
-    m.error = message;
-    return m;
 }
 
 } // namespace envdesign::cluster

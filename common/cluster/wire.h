@@ -1,8 +1,9 @@
 #pragma once
 // Between the design engine's structs and the LCM messages of the planner channels:
 // jobs (dispatcher.h's Job plus its configuration), their answers (TaskExplicability or a
-// robot-cost bound) and the result of a search (design_result_t, SPEC.md's JSON).
+// robot-cost bound); the result of a search is result_message.h's.
 
+#include "cluster/result_message.h"
 #include "design/design_search.h"
 #include "design/dispatcher.h"
 #include "envdesign/design_result_t.hpp"
@@ -40,24 +41,5 @@ void put_robot_bound(std::optional<double> bound, envdesign::evaluation_t &evalu
 
 // The dispatcher's view of an answer that passed evaluation_problem.
 design::JobAnswer job_answer(const design::Job &job, const envdesign::evaluation_t &evaluation);
-
-// Counters only the coordinator knows, for design_result_t.counters.
-struct TransportCounters {
-    long long jobs_sent = 0;
-    long long jobs_resent = 0;
-    long long duplicates_ignored = 0;
-    int planners_used = 0;
-    double transport_seconds = 0;
-    double job_seconds = 0;
-    long long stored_answers = 0;
-};
-
-// design_result_t of a finished search (header fields left to the sender).
-envdesign::design_result_t result_message(const design::DesignProblem &problem,
-                                          const design::DesignResult &result,
-                                          const TransportCounters &transport);
-
-// design_result_t of a request that failed: `exit_code` 2 (bad input) or 1.
-envdesign::design_result_t error_result(int exit_code, const std::string &message);
 
 } // namespace envdesign::cluster

@@ -6,10 +6,11 @@
 #include "bus/channels.h"
 #include "cluster/coordinator.h"
 #include "cluster/planner.h"
+#include "cluster/result_message.h"
 #include "design/design_search.h"
 #include "design/design_spec.h"
+#include "design/explanation.h"
 #include "design/local_evaluator.h"
-#include "design/result_json.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "result_format.h"
@@ -43,7 +44,10 @@ inline nlohmann::json local_result(const std::string &spec_path) {
     design::LocalEvaluator evaluator(problem, 2);
     design::DesignSearchOptions options;
     options.max_design_size = problem.max_design_size;
-    return design::design_json(problem, design::search_design(problem, evaluator, options));
+    design::EvaluationLog log(problem, evaluator);
+    design::DesignResult result = design::search_design(problem, log, options);
+    design::Explanation why = design::explain(problem, result, log, &evaluator.planner(), {});
+    return client::result_json_value(result_message(problem, result, {}, &why));
 }
 
 // The fields of SPEC.md's result that do not depend on how the work was spread (the witness
@@ -52,6 +56,14 @@ inline void expect_same_design(const nlohmann::json &got, const nlohmann::json &
     for (const char *key :
          {"status", "design", "objective", "terms", "baseline", "tasks", "limit_reached"})
         EXPECT_EQ(got.at(key), want.at(key)) << key;
+    // The explanation travels in design_result_t: the same per-task comparison, plans and
+    // marginal values (break-even's set of evaluated designs depends on the work's order).
+    for (const char *key : {"weighted_terms", "least_inexplicability", "weights"})
+        EXPECT_EQ(got.value(key, nlohmann::json()), want.value(key, nlohmann::json())) << key;
+    if (want.contains("explanation")) {
+        for (const char *key : {"tasks", "marginal"})
+            EXPECT_EQ(got.at("explanation").at(key), want.at("explanation").at(key)) << key;
+    }
 }
 
 inline envdesign::design_request_t request_of(const std::string &spec_path, std::int64_t id) {

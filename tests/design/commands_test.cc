@@ -131,19 +131,14 @@ TEST(DesignCommand, RankingOfSettingC) {
         EXPECT_NEAR(out["ranking"][1]["objective"].get<double>(), f + 78.75, 1e-6);
         EXPECT_NEAR(out["ranking"][2]["objective"].get<double>(), f * std::exp(2.0) + 48.75, 1e-6);
     }
-    // Without --ranking there is no "ranking"; a negative N or one with --connect is refused.
+    // Without --ranking there is no "ranking"; a negative N is refused. (With --connect the
+    // request carries N: tests/e2e, EndToEnd.CliConnectRanksAsTheLocalRun.)
     auto plain = run_json("design " + RESTAURANT + "c-two-tasks-t10.textproto --json", 0);
     EXPECT_FALSE(plain.contains("ranking"));
     CommandResult negative =
         run_envdesign("design " + RESTAURANT + "c-two-tasks-t10.textproto --ranking -1");
     EXPECT_EQ(negative.exit_code, 2) << negative.out;
     EXPECT_NE(negative.out.find("--ranking"), std::string::npos) << negative.out;
-    CommandResult remote = run_envdesign("design " + RESTAURANT +
-                                         "c-two-tasks-t10.textproto --ranking 2 --connect "
-                                         "memq://");
-    EXPECT_EQ(remote.exit_code, 2) << remote.out;
-    EXPECT_NE(remote.out.find("--ranking: not available with --connect"), std::string::npos)
-        << remote.out;
 }
 
 } // namespace

@@ -254,6 +254,28 @@ TEST(EndToEnd, CliConnectGivesTheSelfContainedResult) {
     EXPECT_NE(error.find("missing-file.textproto:4:"), std::string::npos) << error;
 }
 
+// --ranking N travels in the request, and the coordinator's result ranks (and explains) as
+// the local run does: the restaurant's 3 best, a tie of the symmetric barrier pairs first.
+TEST(EndToEnd, CliConnectRanksAsTheLocalRun) {
+    LocalCluster cluster(1);
+    int exit_code = -1;
+    std::string command =
+        binary("envdesign") + " design " + source(RESTAURANT) + " --json --ranking 3 2>/dev/null";
+    std::string local = command_output(command, &exit_code);
+    ASSERT_EQ(exit_code, 0) << local;
+    std::string remote =
+        command_output(binary("envdesign") + " design " + source(RESTAURANT) +
+                           " --json --ranking 3 --connect '" + cluster.url() + "' 2>/dev/null",
+                       &exit_code);
+    ASSERT_EQ(exit_code, 0) << remote << cluster.logs();
+    nlohmann::json want = nlohmann::json::parse(local), got = nlohmann::json::parse(remote);
+    expect_same_design(got, want);
+    ASSERT_EQ(got.at("ranking").size(), 3u);
+    EXPECT_EQ(got.at("ranking"), want.at("ranking"));
+    EXPECT_EQ(got.at("ranking")[1].at("design"),
+              nlohmann::json({"barrier-01-02", "barrier-11-12"}));
+}
+
 // Ctrl-C on `envdesign design --connect`: the request is cancelled on the coordinator (it
 // does not keep a slot searching for nobody) and the best design so far is printed, exit 4.
 TEST(EndToEnd, CliInterruptedCancelsTheRequest) {

@@ -296,6 +296,13 @@ inline void expect_same_design(const nlohmann::json &got, const nlohmann::json &
     for (const char *key :
          {"status", "design", "objective", "terms", "baseline", "tasks", "limit_reached"})
         EXPECT_EQ(got.at(key), want.at(key)) << key;
+    // The explanation travels too (design_result_t): per task, plans and marginal values.
+    for (const char *key : {"weighted_terms", "least_inexplicability"})
+        EXPECT_EQ(got.value(key, nlohmann::json()), want.value(key, nlohmann::json())) << key;
+    if (want.contains("explanation")) {
+        for (const char *key : {"tasks", "marginal"})
+            EXPECT_EQ(got.at("explanation").at(key), want.at("explanation").at(key)) << key;
+    }
 }
 
 } // namespace envdesign::e2e

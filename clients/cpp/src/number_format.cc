@@ -1,0 +1,57 @@
+#include "result_format.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace envdesign::client {
+
+nlohmann::json json_number(std::optional<double> value) {
+    if (!value || std::isnan(*value))
+        return nullptr;
+    if (std::isinf(*value))
+        return *value > 0 ? "inf" : "-inf";
+    if (*value == std::floor(*value) && std::abs(*value) < 1e15)
+        return static_cast<long long>(*value);
+    return *value;
+}
+
+std::string json_text(const nlohmann::json &value) {
+    return value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string shown(double value) {
+    if (std::isnan(value))
+        return "?";
+    if (std::isinf(value))
+        return value > 0 ? "inf" : "-inf";
+    char buffer[64];
+    if (value == std::floor(value) && std::abs(value) < 1e15)
+        std::snprintf(buffer, sizeof buffer, "%lld", static_cast<long long>(value));
+    else if (std::abs(value) >= 1000 && std::abs(value) < 1e9)
+        std::snprintf(buffer, sizeof buffer, "%.1f", value);
+    else
+        std::snprintf(buffer, sizeof buffer, "%.4g", value);
+    return buffer;
+}
+
+double objective_with(const envdesign::explanation_t &w, const envdesign::design_point_t &point,
+                      int horizon, double alpha) {
+    if (std::isnan(point.expected_ie))
+        return NAN;
+    if (std::isinf(point.expected_ie))
+        return INFINITY;
+    double discounted = w.gamma >= 1 ? horizon : (1 - std::pow(w.gamma, horizon)) / (1 - w.gamma);
+    return alpha * point.expected_ie * discounted + w.beta * point.design_cost +
+           w.kappa * horizon * point.expected_robot_cost;
+}
+
+std::string design_set(const std::vector<std::string> &design) {
+    if (design.empty())
+        return "{} (the empty design)";
+    std::string out = "{";
+    for (std::size_t i = 0; i < design.size(); ++i)
+        out += (i ? ", " : "") + design[i];
+    return out + "}";
+}
+
+} // namespace envdesign::client

@@ -1,0 +1,75 @@
+#include "evaluate_command.h"
+
+#include "cli_error.h"
+#include "local_run.h"
+#include "result_format.h"
+
+#include "design/design_spec.h"
+#include "design/evaluate_design.h"
+
+#include <spdlog/spdlog.h>
+
+#include <iostream>
+#include <sstream>
+
+namespace envdesign::cli {
+namespace {
+
+// "a,b" -> {"a", "b"}; "" -> {} (the empty design). Blanks around names are dropped.
+std::vector<std::string> split_names(const std::string &list) {
+    std::vector<std::string> names;
+    if (list.find_first_not_of(" \t") == std::string::npos)
+        return names;
+    std::stringstream in(list);
+    std::string name;
+    while (std::getline(in, name, ',')) {
+        auto first = name.find_first_not_of(" \t");
+        auto last = name.find_last_not_of(" \t");
+        names.push_back(first == std::string::npos ? "" : name.substr(first, last - first + 1));
+    }
+    if (!list.empty() && list.back() == ',')
+        names.push_back("");
+    return names;
+}
+
+} // namespace
+
+void add_evaluate_flags(CLI::App &command, EvaluateFlags &flags) {
+    command.add_option("spec", flags.spec, "design problem file (.textproto or .json)")->required();
+    command
+        .add_option("--design", flags.design,
+                    "the modifications, comma-separated ('' for the empty design)")
+        ->required();
+    command.add_flag("--json", flags.json, "print a JSON result");
+    command.add_option("--workers", flags.workers, "planner threads")->check(CLI::Range(1, 256));
+    command
+        .add_option("--time-limit", flags.time_limit_s, "seconds (0: none; default: the spec's)")
+        ->check(CLI::NonNegativeNumber);
+    command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
+        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+}
+
+int run_evaluate(const EvaluateFlags &flags) {
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    std::optional<design::DesignProblem> problem = design::load_design_problem(flags.spec);
+    design::Configuration configuration;
+    try {
+        configuration = design::configuration_of(*problem, split_names(flags.design));
+    } catch (const design::UnknownModification &e) {
+        throw CommandError(2, std::string("--design: ") + e.what());
+    }
+    double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem->time_limit_s;
+    design::Deadline deadline = design::Deadline::in(seconds);
+    LocalRun run(*problem, flags.workers, flags.heuristic);
+    design::DesignResult result =
+        design::evaluate_design(*problem, run.evaluator(), configuration, deadline);
+    envdesign::design_result_t message = run.message(result, deadline);
+    message.status = "evaluated";
+    std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
+              << std::flush;
+    if (message.limit_reached)
+        spdlog::warn("the time limit stopped the evaluation");
+    return message.limit_reached ? 4 : 0;
+}
+
+} // namespace envdesign::cli

@@ -1,0 +1,39 @@
+#include "design/design_point.h"
+
+namespace envdesign::design {
+
+DesignPoint design_point(const DesignProblem &problem, const Configuration &configuration,
+                         const std::vector<TaskExplicability> &tasks) {
+    DesignPoint point{configuration, design_cost(problem, configuration), 0, 0};
+    for (std::size_t i = 0; i < tasks.size() && i < problem.tasks.size(); ++i) {
+        double p = problem.tasks[i].probability;
+        if (p <= 0)
+            continue;
+        if (tasks[i].status != ExplicabilityStatus::SOLVED) {
+            point.expected_ie = point.expected_robot_cost = INF;
+            return point;
+        }
+        // Summed in task order, as objective_of() does, so that both agree exactly.
+        point.expected_ie += p * tasks[i].ie;
+        point.expected_robot_cost += p * tasks[i].robot_cost;
+    }
+    return point;
+}
+
+Objective objective_at(const ObjectiveWeights &w, const DesignPoint &point) {
+    Objective out;
+    out.terms.design_cost = point.design_cost;
+    if (point.expected_ie == INF)
+        return out; // infinite, whatever the weights
+    out.terms.inexplicability = point.expected_ie * discounted_horizon(w);
+    out.terms.robot_cost = w.horizon * point.expected_robot_cost;
+    out.value = w.alpha * out.terms.inexplicability + w.beta * out.terms.design_cost +
+                w.kappa * out.terms.robot_cost;
+    return out;
+}
+
+RankedDesign ranked_at(const ObjectiveWeights &weights, const DesignPoint &point) {
+    return {objective_at(weights, point).value, point.design_cost, point.configuration};
+}
+
+} // namespace envdesign::design

@@ -1,0 +1,72 @@
+// The one result formatter (clients/cpp/src/result_format.h) on the message both paths share:
+// the explained result survives LCM encoding byte for byte, text numbers are rounded for
+// reading, and the plan diff marks what differs.
+
+#include "bus/codec.h"
+#include "cluster/result_message.h"
+#include "design/design_spec.h"
+#include "design/explanation.h"
+#include "design/local_evaluator.h"
+#include "plan_diff.h"
+#include "result_format.h"
+
+#include <gtest/gtest.h>
+
+namespace envdesign::cluster {
+namespace {
+
+envdesign::design_result_t explained_restaurant() {
+    design::DesignProblem problem = design::load_design_problem(
+        std::string(ENVDESIGN_TEST_DATA_ROOT) + "/examples/restaurant/c-two-tasks-t10.textproto");
+    design::LocalEvaluator local(problem, 1);
+    design::EvaluationLog log(problem, local);
+    design::DesignSearchOptions options;
+    options.ranking = 3;
+    design::DesignResult result = design::search_design(problem, log, options);
+    design::Explanation why = design::explain(problem, result, log, &local.planner(), {});
+    return result_message(problem, result, {}, &why);
+}
+
+// What --connect prints is what the local run prints: the explanation and the ranking
+// travel in design_result_t and format to the same JSON after decoding.
+TEST(ResultFormat, ExplanationSurvivesTheWire) {
+    envdesign::design_result_t sent = explained_restaurant();
+    ASSERT_TRUE(sent.has_explanation);
+    envdesign::design_result_t received;
+    ASSERT_TRUE(bus::decode_message(bus::encode_message(sent), received));
+    EXPECT_EQ(client::result_json(received), client::result_json(sent));
+    EXPECT_EQ(client::result_text(received), client::result_text(sent));
+    nlohmann::json j = client::result_json_value(received);
+    ASSERT_EQ(j.at("ranking").size(), 3u);
+    EXPECT_EQ(j.at("ranking")[1].at("design"), nlohmann::json({"barrier-01-02", "barrier-11-12"}));
+    EXPECT_EQ(j.at("explanation").at("tasks")[0].at("robot_optimal_cost"), 7);
+}
+
+TEST(ResultFormat, NumbersForPeople) {
+    EXPECT_EQ(client::shown(85.263215599), "85.26");
+    EXPECT_EQ(client::shown(6.513215599000001), "6.513");
+    EXPECT_EQ(client::shown(244), "244");
+    EXPECT_EQ(client::shown(1234.56), "1234.6");
+    EXPECT_EQ(client::shown(0.000123456), "0.0001235");
+    EXPECT_EQ(client::shown(design::INF), "inf");
+    EXPECT_EQ(client::json_number(design::INF), "inf");
+    EXPECT_EQ(client::json_number(85.263215599).get<double>(), 85.263215599); // full precision
+}
+
+// pi = a b c d, other = a x c d y: common a c d; b only in pi, x and y only in the other.
+TEST(ResultFormat, PlanDiffKeepsTheLongestCommonSteps) {
+    auto diff = client::plan_diff({"a", "b", "c", "d"}, {"a", "x", "c", "d", "y"});
+    std::string shown;
+    for (const auto &s : diff)
+        shown += (s.side == client::DiffSide::BOTH         ? " "
+                  : s.side == client::DiffSide::ONLY_FIRST ? "+"
+                                                           : "-") +
+                 s.action;
+    EXPECT_EQ(shown, " a+b-x c d-y");
+    EXPECT_TRUE(client::plans_differ(diff));
+    EXPECT_FALSE(client::plans_differ(client::plan_diff({"a", "b"}, {"a", "b"})));
+    EXPECT_EQ(client::plan_diff({}, {"a"}).size(), 1u);
+}
+
+} // namespace
+} // namespace envdesign::cluster
