@@ -2,6 +2,7 @@
 
 #include "design/design_search.h"
 #include "design/design_spec.h"
+#include "design/explaining.h"
 #include "design/local_evaluator.h"
 #include "design/progress.h"
 #include "design/relevance.h"
@@ -24,7 +25,36 @@ void print_terms(const std::string &label, const design::EvaluatedDesign &d) {
     const auto &t = d.objective.terms;
     std::cout << label << number(d.objective.value) << " (inexplicability "
               << number(t.inexplicability) << ", design cost " << number(t.design_cost)
-              << ", robot cost " << number(t.robot_cost) << ")\n";
+              << ", robot cost " << number(t.robot_cost);
+    if (t.explanation != 0)
+        std::cout << ", explanation " << number(t.explanation);
+    std::cout << ")\n";
+}
+
+// The option taken (robot_behaviour EXPLAINING: maybe pi_R and its explanation).
+void print_task(const design::DesignProblem &problem, const std::string &name,
+                const design::TaskExplicability &t) {
+    design::BehaviourChoice c = design::choose_behaviour(problem.weights, t);
+    const auto &plan = c.explained ? t.explanation->robot_plan : t.plan;
+    std::cout << "task " << name << ": ie " << number(c.ie) << ", robot cost "
+              << number(c.robot_cost) << ", plan";
+    for (const auto &step : plan)
+        std::cout << " " << step;
+    std::cout << "\n";
+    if (problem.weights.behaviour != design::RobotBehaviour::EXPLAINING || !t.explanation)
+        return;
+    const auto &x = *t.explanation;
+    std::cout << (c.explained ? "  explains" : "  acts explicably (explanation");
+    if (!x.found) {
+        std::cout << ": none)\n";
+        return;
+    }
+    std::cout << ":";
+    for (std::size_t i = 0; i < x.differences.size(); ++i)
+        std::cout << (i ? ", " : " ") << x.differences[i];
+    if (x.differences.empty())
+        std::cout << " nothing to tell";
+    std::cout << (c.explained ? "\n" : ")\n");
 }
 
 void print_text(const design::DesignProblem &problem, const design::DesignResult &result) {
@@ -38,14 +68,8 @@ void print_text(const design::DesignProblem &problem, const design::DesignResult
     print_terms("objective: ", *result.best);
     if (result.baseline)
         print_terms("baseline: ", *result.baseline);
-    for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
-        const auto &t = result.best->tasks[i];
-        std::cout << "task " << problem.tasks[i].name << ": ie " << number(t.ie) << ", robot cost "
-                  << number(t.robot_cost) << ", plan";
-        for (const auto &step : t.plan)
-            std::cout << " " << step;
-        std::cout << "\n";
-    }
+    for (std::size_t i = 0; i < problem.tasks.size(); ++i)
+        print_task(problem, problem.tasks[i].name, result.best->tasks[i]);
     if (result.gap)
         std::cout << "proven gap: " << number(*result.gap) << "\n";
     for (const auto &note : result.notes)

@@ -1,6 +1,7 @@
 #include "cluster/wire.h"
 
 #include "bus/log.h"
+#include "cluster/wire_explanation.h"
 #include "design/objective.h"
 #include "envdesign/design_request_t.hpp"
 
@@ -19,6 +20,7 @@ envdesign::design_terms_t terms_message(const design::Objective &objective) {
     t.inexplicability = objective.terms.inexplicability;
     t.design_cost = objective.terms.design_cost;
     t.robot_cost = objective.terms.robot_cost;
+    t.explanation = objective.terms.explanation;
     return t;
 }
 
@@ -34,12 +36,13 @@ void put_costs_and_plan(const design::TaskExplicability &t, Message &m) {
     m.plan_length = static_cast<std::int16_t>(m.plan.size());
 }
 
-envdesign::task_result_t task_message(const design::DesignTask &task,
+envdesign::task_result_t task_message(const design::DesignProblem &problem, std::size_t i,
                                       const design::TaskExplicability &t) {
     envdesign::task_result_t m;
-    m.name = task.name;
-    m.probability = task.probability;
+    m.name = problem.tasks[i].name;
+    m.probability = problem.tasks[i].probability;
     put_costs_and_plan(t, m);
+    put_option(problem.weights, t, m);
     return m;
 }
 
@@ -137,6 +140,8 @@ std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t
     if (!valid_cost(e.ie) || !valid_cost(e.robot_cost) || !valid_cost(e.human_plan_cost) ||
         (e.has_human_optimal_cost && !valid_cost(e.human_optimal_cost)))
         return "a cost or IE is not a non-negative number";
+    if (e.has_explanation)
+        return explanation_problem(e.explanation);
     return std::nullopt;
 }
 
@@ -156,6 +161,8 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     if (t.human_plan)
         e.human_plan = *t.human_plan;
     e.human_plan_length = static_cast<std::int16_t>(e.human_plan.size());
+    e.has_explanation = t.explanation.has_value();
+    e.explanation = explanation_message(t.explanation.value_or(design::TaskExplanation{}));
 }
 
 void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
@@ -186,6 +193,8 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
     t.plan = e.plan;
     if (e.has_human_plan)
         t.human_plan = e.human_plan;
+    if (e.has_explanation)
+        t.explanation = explanation_value(e.explanation);
     return answer;
 }
 
@@ -201,7 +210,7 @@ envdesign::design_result_t result_message(const design::DesignProblem &problem,
         m.design_size = static_cast<std::int16_t>(m.design.size());
         m.best = terms_message(result.best->objective);
         for (std::size_t i = 0; i < result.best->tasks.size(); ++i)
-            m.tasks.push_back(task_message(problem.tasks[i], result.best->tasks[i]));
+            m.tasks.push_back(task_message(problem, i, result.best->tasks[i]));
         m.num_tasks = static_cast<std::int16_t>(m.tasks.size());
     }
     m.has_baseline = result.baseline.has_value();

@@ -142,7 +142,7 @@ private:
         w.behaviour = behaviour_from_proto(m_.robot_behaviour());
         w.explanation_cost =
             weight(m_.has_explanation_cost(), m_.explanation_cost(), 1, "explanation_cost");
-        if (w.behaviour != RobotBehaviour::EXPLICABLE)
+        if (w.behaviour != RobotBehaviour::EXPLICABLE && w.behaviour != RobotBehaviour::EXPLAINING)
             fail("robot_behaviour",
                  "robot_behaviour " +
                      proto::DesignProblem::RobotBehaviour_Name(m_.robot_behaviour()) +

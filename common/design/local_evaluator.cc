@@ -1,6 +1,7 @@
 #include "design/local_evaluator.h"
 
 #include "design/dispatcher.h"
+#include "design/explaining.h"
 #include "design/explicability.h"
 
 #include <condition_variable>
@@ -84,7 +85,7 @@ LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
 TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
                                                 const Deadline &deadline) {
     ModelPair models = configured_models(problem_, configuration, task);
-    return evaluate_explicability(models, problem_.weights.distance, cache_, deadline);
+    return evaluate_task_behaviour(models, problem_.weights, cache_, deadline);
 }
 
 std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration, int task,

@@ -1,5 +1,7 @@
 #include "design/result_json.h"
 
+#include "design/explaining.h"
+
 #include <cmath>
 
 namespace envdesign::design {
@@ -16,28 +18,54 @@ std::string status_name(ExplicabilityStatus status) {
     }
 }
 
-nlohmann::json terms_json(const ObjectiveTerms &terms) {
-    return {{"inexplicability", json_number(terms.inexplicability)},
-            {"design_cost", json_number(terms.design_cost)},
-            {"robot_cost", json_number(terms.robot_cost)}};
+bool explaining(const DesignProblem &problem) {
+    return problem.weights.behaviour == RobotBehaviour::EXPLAINING;
 }
 
-nlohmann::json objective_json(const EvaluatedDesign &design) {
+nlohmann::json terms_json(const DesignProblem &problem, const ObjectiveTerms &terms) {
+    nlohmann::json out = {{"inexplicability", json_number(terms.inexplicability)},
+                          {"design_cost", json_number(terms.design_cost)},
+                          {"robot_cost", json_number(terms.robot_cost)}};
+    if (explaining(problem))
+        out["explanation"] = json_number(terms.explanation);
+    return out;
+}
+
+nlohmann::json objective_json(const DesignProblem &problem, const EvaluatedDesign &design) {
     return {{"objective", json_number(design.objective.value)},
-            {"terms", terms_json(design.objective.terms)}};
+            {"terms", terms_json(problem, design.objective.terms)}};
+}
+
+// EXPLAINING: the option taken sets ie, robot_cost and plan; both options are shown.
+void put_option(const DesignProblem &problem, const TaskExplicability &t, nlohmann::json &task) {
+    if (!explaining(problem) || !t.explanation)
+        return;
+    const TaskExplanation &x = *t.explanation;
+    BehaviourChoice c = choose_behaviour(problem.weights, t);
+    task["option"] = c.explained ? "explain" : "act_explicably";
+    task["explanation"] = x.found ? nlohmann::json(x.differences) : nlohmann::json();
+    task["explicable_ie"] = json_number(t.ie);
+    task["robot_optimal_cost"] = json_number(x.robot_optimal_cost);
+    if (c.explained) {
+        task["ie"] = json_number(c.ie);
+        task["robot_cost"] = json_number(c.robot_cost);
+        task["plan"] = x.robot_plan;
+    }
 }
 
 nlohmann::json tasks_json(const DesignProblem &problem, const EvaluatedDesign &design) {
     nlohmann::json tasks = nlohmann::json::array();
     for (std::size_t i = 0; i < design.tasks.size(); ++i) {
         const TaskExplicability &t = design.tasks[i];
-        tasks.push_back({{"name", problem.tasks[i].name},
-                         {"probability", problem.tasks[i].probability},
-                         {"ie", json_number(t.ie)},
-                         {"robot_cost", json_number(t.robot_cost)},
-                         {"human_plan_cost", json_number(t.human_plan_cost)},
-                         {"human_optimal_cost", json_number(t.human_optimal_cost)},
-                         {"plan", t.plan}});
+        nlohmann::json task = {{"name", problem.tasks[i].name},
+                               {"probability", problem.tasks[i].probability},
+                               {"ie", json_number(t.ie)},
+                               {"robot_cost", json_number(t.robot_cost)},
+                               {"human_plan_cost", json_number(t.human_plan_cost)},
+                               {"human_optimal_cost", json_number(t.human_optimal_cost)},
+                               {"plan", t.plan}};
+        put_option(problem, t, task);
+        tasks.push_back(std::move(task));
     }
     return tasks;
 }
@@ -73,7 +101,7 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
     out["status"] = result.optimal ? "optimal" : "best_found";
     if (result.best) {
         out["design"] = design_names(problem, result.best->ranked.configuration);
-        out.update(objective_json(*result.best));
+        out.update(objective_json(problem, *result.best));
         out["tasks"] = tasks_json(problem, *result.best);
     } else {
         out["design"] = nullptr;
@@ -81,7 +109,8 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
         out["terms"] = nullptr;
         out["tasks"] = nlohmann::json::array();
     }
-    out["baseline"] = result.baseline ? objective_json(*result.baseline) : nlohmann::json();
+    out["baseline"] =
+        result.baseline ? objective_json(problem, *result.baseline) : nlohmann::json();
     out["configurations_evaluated"] = c.configurations_evaluated;
     out["planner_runs"] = c.evaluator.planner_runs;
     out["seconds"] = c.seconds;

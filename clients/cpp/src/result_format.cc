@@ -19,25 +19,49 @@ json number(double value) {
     return value;
 }
 
-json objective_json(const envdesign::design_terms_t &t) {
-    return {{"objective", number(t.objective)},
-            {"terms",
-             {{"inexplicability", number(t.inexplicability)},
-              {"design_cost", number(t.design_cost)},
-              {"robot_cost", number(t.robot_cost)}}}};
+// robot_behaviour EXPLAINING: the tasks carry their explaining option.
+bool explaining(const envdesign::design_result_t &r) {
+    for (const auto &t : r.tasks)
+        if (t.has_explanation)
+            return true;
+    return false;
+}
+
+json objective_json(const envdesign::design_terms_t &t, bool explaining) {
+    json out = {{"objective", number(t.objective)},
+                {"terms",
+                 {{"inexplicability", number(t.inexplicability)},
+                  {"design_cost", number(t.design_cost)},
+                  {"robot_cost", number(t.robot_cost)}}}};
+    if (explaining)
+        out["terms"]["explanation"] = number(t.explanation);
+    return out;
+}
+
+// As design/result_json.cc: the option taken and both options' key values.
+void put_option(const envdesign::task_result_t &t, json &task) {
+    if (!t.has_explanation)
+        return;
+    task["option"] = t.explained ? "explain" : "act_explicably";
+    task["explanation"] = t.explanation.found ? json(t.explanation.differences) : json();
+    task["explicable_ie"] = number(t.explicable_ie);
+    task["robot_optimal_cost"] = number(t.explanation.robot_optimal_cost);
 }
 
 json tasks_json(const envdesign::design_result_t &r) {
     json tasks = json::array();
-    for (const auto &t : r.tasks)
-        tasks.push_back({{"name", t.name},
-                         {"probability", t.probability},
-                         {"ie", number(t.ie)},
-                         {"robot_cost", number(t.robot_cost)},
-                         {"human_plan_cost", number(t.human_plan_cost)},
-                         {"human_optimal_cost",
-                          t.has_human_optimal_cost ? number(t.human_optimal_cost) : json()},
-                         {"plan", t.plan}});
+    for (const auto &t : r.tasks) {
+        json task = {{"name", t.name},
+                     {"probability", t.probability},
+                     {"ie", number(t.ie)},
+                     {"robot_cost", number(t.robot_cost)},
+                     {"human_plan_cost", number(t.human_plan_cost)},
+                     {"human_optimal_cost",
+                      t.has_human_optimal_cost ? number(t.human_optimal_cost) : json()},
+                     {"plan", t.plan}};
+        put_option(t, task);
+        tasks.push_back(std::move(task));
+    }
     return tasks;
 }
 
@@ -68,8 +92,25 @@ std::string shown(double value) { return number(value).dump(); }
 
 void terms_line(std::ostream &out, const char *label, const envdesign::design_terms_t &t) {
     out << label << shown(t.objective) << " (inexplicability " << shown(t.inexplicability)
-        << ", design cost " << shown(t.design_cost) << ", robot cost " << shown(t.robot_cost)
-        << ")\n";
+        << ", design cost " << shown(t.design_cost) << ", robot cost " << shown(t.robot_cost);
+    if (t.explanation != 0)
+        out << ", explanation " << shown(t.explanation);
+    out << ")\n";
+}
+
+// "  explains: +init (a), -pre move (b)" or "  acts explicably (explanation: ...)".
+void explanation_line(std::ostream &out, const envdesign::task_result_t &t) {
+    out << (t.explained ? "  explains" : "  acts explicably (explanation");
+    if (!t.explanation.found) {
+        out << ": none)\n";
+        return;
+    }
+    out << ":";
+    for (std::size_t i = 0; i < t.explanation.differences.size(); ++i)
+        out << (i ? ", " : " ") << t.explanation.differences[i];
+    if (t.explanation.differences.empty())
+        out << " nothing to tell";
+    out << (t.explained ? "\n" : ")\n");
 }
 
 } // namespace
@@ -79,7 +120,7 @@ std::string result_json(const envdesign::design_result_t &r) {
     out["status"] = r.status;
     if (r.has_design) {
         out["design"] = r.design;
-        out.update(objective_json(r.best));
+        out.update(objective_json(r.best, explaining(r)));
         out["tasks"] = tasks_json(r);
     } else {
         out["design"] = nullptr;
@@ -87,7 +128,7 @@ std::string result_json(const envdesign::design_result_t &r) {
         out["terms"] = nullptr;
         out["tasks"] = json::array();
     }
-    out["baseline"] = r.has_baseline ? objective_json(r.baseline) : json();
+    out["baseline"] = r.has_baseline ? objective_json(r.baseline, explaining(r)) : json();
     put_counters(out, r.counters);
     out["limit_reached"] = r.limit_reached != 0;
     if (r.has_gap)
@@ -120,6 +161,8 @@ std::string result_text(const envdesign::design_result_t &r) {
         for (const auto &step : t.plan)
             out << " " << step;
         out << "\n";
+        if (t.has_explanation)
+            explanation_line(out, t);
     }
     if (r.has_gap)
         out << "proven gap: " << shown(r.gap) << "\n";
