@@ -49,7 +49,7 @@ std::string sign(bool robot_has) { return robot_has ? "+" : "-"; }
 
 class Collector {
 public:
-    explicit Collector(const ModelPair &m) : models_(m) {
+    Collector(const ModelPair &m, bool relevant_only) : models_(m), relevant_only_(relevant_only) {
         // Only predicates some precondition or goal reads can change a plan's validity.
         for (const pddl::Domain *d : {&m.robot_domain, &m.human_domain})
             for (const auto &a : d->actions)
@@ -102,7 +102,7 @@ private:
                 const pddl::Literal &l = from[i];
                 if (contains(other, l) || contains(seen, l))
                     continue;
-                if (only_read && !read_.count(l.atom.predicate))
+                if (only_read && relevant_only_ && !read_.count(l.atom.predicate))
                     continue;
                 seen.push_back(l);
                 std::string shown = (text ? (*text)[i] : l).to_string();
@@ -144,6 +144,7 @@ private:
     }
 
     const ModelPair &models_;
+    bool relevant_only_;
     std::set<std::string> read_;
     std::vector<ModelDifference> out_;
 };
@@ -202,8 +203,8 @@ void apply_action(const ModelDifference &d, const ModelPair &models, ModelPair &
 
 } // namespace
 
-std::vector<ModelDifference> model_differences(const ModelPair &models) {
-    return Collector(models).run();
+std::vector<ModelDifference> model_differences(const ModelPair &models, bool relevant_only) {
+    return Collector(models, relevant_only).run();
 }
 
 void apply_difference(const ModelDifference &d, const ModelPair &models, ModelPair &told) {

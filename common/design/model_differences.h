@@ -40,9 +40,10 @@ struct ModelDifference {
     std::string text;      // "+init (connected c00 c01)", "-pre move (clear ?to)", ...
 };
 
-// Every relevant difference of `models`, in a fixed order (kinds as above, then the models'
+// Every relevant difference of `models` (all of them with `relevant_only` false: the tests'
+// check that the pruning is sound), in a fixed order (kinds as above, then the models'
 // order). Throws pddl::ParseError if a schema has different parameter counts in the models.
-std::vector<ModelDifference> model_differences(const ModelPair &models);
+std::vector<ModelDifference> model_differences(const ModelPair &models, bool relevant_only = true);
 
 // Applies `difference` to told.human_domain / told.human_problem, taking declarations and
 // schemas from `models` (the models the difference was computed from).
