@@ -1,5 +1,6 @@
 #include "design/explanation.h"
 
+#include "design/explanation_hitting.h"
 #include "design/explicability.h"
 #include "validate/plan_validator.h"
 
@@ -49,6 +50,10 @@ ExplanationSearch minimal_explanation(const ModelPair &models,
                                       PlanCache &planner, const Deadline &deadline) {
     ExplanationSearch search;
     search.differences = model_differences(models);
+    if (all_restricting(models, search.differences)) {
+        hitting_set_explanation(models, robot_plan, planner, deadline, search);
+        return search;
+    }
     int n = static_cast<int>(search.differences.size());
     for (int k = 0; k <= n; ++k) {
         std::vector<int> subset(k);

@@ -15,6 +15,9 @@
 // Pruning that keeps minimality: differences about predicates no precondition or goal reads
 // are not candidates (model_differences.h: they change no plan). Nothing else is skipped, so
 // the count of subsets tried is sum_{k<=|E|} C(n, k); the deadline bounds it (LIMIT).
+// When every difference only removes plans of P_H (explanation_hitting.h), an exact implicit
+// hitting-set search replaces the enumeration: one planner call per cheaper human plan met,
+// not one per subset (the IPC-Grid problems have 36 differences and explanations of 6 or more).
 
 #include "design/configuration.h"
 #include "design/deadline.h"
@@ -38,6 +41,7 @@ struct ExplanationSearch {
     std::vector<int> chosen;                  // indices into `differences`, ascending
     long long subsets_tried = 0;
     long long planner_checks = 0; // subsets on which pi_R was valid, so the planner ran
+    bool hitting_sets = false;    // found by explanation_hitting.h (all differences restricting)
 };
 
 // Whether pi_R is valid and optimal in the human's model of `told` (the planner decides the
