@@ -15,6 +15,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
 #include <tuple>
 
 namespace envdesign::design {
@@ -138,6 +141,28 @@ TEST(ExplainingRestaurant, DearExplanationsTakeThePapersBarriers) {
     ASSERT_TRUE(r.baseline);
     EXPECT_NEAR(r.baseline->objective.value, 0.5 * (H * std::exp(2.0) + 17.5) + 0.5 * (41 * H + 20),
                 1e-9);
+}
+
+// The spec fields: EXPLAINING is read, a negative explanation_cost is bad input naming it.
+TEST(ExplainingSpec, FieldsAreReadAndCheckedAtTheirLine) {
+    DesignProblem problem =
+        load_design_problem(RESTAURANT + "c-two-tasks-t10-explaining.textproto");
+    EXPECT_EQ(problem.weights.behaviour, RobotBehaviour::EXPLAINING);
+    EXPECT_EQ(problem.weights.explanation_cost, 1);
+    std::ifstream in(RESTAURANT + "c-two-tasks-t10-explaining.textproto");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string spec = std::regex_replace(text.str(), std::regex("\"([a-z0-9-]+\\.pddl)\""),
+                                          "\"" + RESTAURANT + "$1\"");
+    spec = std::regex_replace(spec, std::regex("explanation_cost: 1"), "explanation_cost: -1");
+    std::string path = ::testing::TempDir() + "/explaining-negative.textproto";
+    std::ofstream(path) << spec;
+    try {
+        load_design_problem(path);
+        ADD_FAILURE() << "a negative explanation_cost was accepted";
+    } catch (const pddl::ParseError &e) {
+        EXPECT_NE(std::string(e.what()).find("explanation_cost"), std::string::npos) << e.what();
+    }
 }
 
 TEST(ExplainingRecord, StoredEvaluationsKeepTheExplanation) {
