@@ -50,10 +50,25 @@ bool valid_with(const ModelPair &models, const ExplanationSearch &search, int d,
 
 } // namespace
 
+// Differences that add a requirement (a precondition or a goal) on a predicate.
+bool adds_requirement(const ModelDifference &d) {
+    return d.kind == DifferenceKind::PRECONDITION || d.kind == DifferenceKind::GOAL;
+}
+
 bool all_restricting(const ModelPair &models, const std::vector<ModelDifference> &differences) {
     std::set<std::string> negative = negatively_read(models);
-    for (const auto &d : differences)
+    std::set<std::string> required, shrunk;
+    for (const auto &d : differences) {
         if (!restricting(d, negative))
+            return false;
+        if (d.kind != DifferenceKind::ACTION)
+            (adds_requirement(d) ? required : shrunk).insert(d.literal.atom.predicate);
+    }
+    // A requirement and a shrink on the same predicate break the union closure: Blocksworld's
+    // (handempty) precondition alone or its delete alone keeps a two-block plan valid, both
+    // together do not.
+    for (const auto &p : required)
+        if (shrunk.count(p))
             return false;
     return true;
 }

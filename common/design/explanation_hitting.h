@@ -5,10 +5,15 @@
 // A difference is restricting when applying it can only remove plans of P_H: removing an
 // initial atom, adding a positive precondition or goal, adding a delete effect, removing an
 // add effect or an action, where the predicate is never read negatively (no (not ...) in a
-// precondition or goal of either model). Then for a fixed action sequence pi, validity is
-// closed under union: pi valid in P_H + E1 and in P_H + E2 implies pi valid in P_H + (E1 u E2)
-// (the states along pi in P_H + (E1 u E2) contain the intersection of the other two, by
-// induction over the steps, and every read is positive). Hence:
+// precondition or goal of either model), and no predicate is both required anew (an added
+// precondition or goal) and shrunk (an initial atom removed, a delete added, an add removed).
+// Then for a fixed action sequence pi, validity is closed under union: pi valid in P_H + E1
+// and in P_H + E2 implies pi valid in P_H + (E1 u E2). (Shrinks change only the atoms of
+// their predicates, and along pi the states of P_H + (E1 u E2) contain the intersection of
+// the other two, by induction over the steps; added requirements read predicates no
+// difference shrinks, whose atoms evolve alike in all three; every read is positive.) Without
+// the last condition it fails: Blocksworld's (handempty) precondition alone, or its delete
+// alone, keeps a plan holding two blocks valid; both together do not. Hence:
 //   - pi_R is valid in P_H + E iff pi_R is valid in P_H and no d in E alone breaks it: the
 //     differences that break pi_R alone are never candidates;
 //   - a plan pi' of P_H + E cheaper than pi_R is a plan of P_H + E* unless E* holds some d that

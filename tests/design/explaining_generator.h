@@ -8,7 +8,10 @@
 //   - a goal literal only one model has ((visited nV));
 //   - an action schema only one model has (jump);
 //   - facts about a predicate nothing reads ((lit ?n): the relevance pruning's case);
-//   - action costs that differ (with :action-costs).
+//   - action costs that differ (with :action-costs);
+//   - a precondition and a delete on the same predicate that people do not know (move needs
+//     and uses up (ready), rest restores it): Blocksworld's empty hand, where one difference
+//     alone changes nothing and the pair does.
 // The same text also makes design problems (spec_text) with modifications of several kinds.
 
 #include <random>
@@ -35,6 +38,7 @@ using Pass = std::pair<int, int>;
 
 struct Side {
     bool blocked_pre = false, visit_effect = true, visit_goal = false, jump = false;
+    bool ready_pre = false, ready_del = false; // move needs / deletes (ready)
     int move_cost = 1, jump_cost = 2;
     std::set<Pass> conn, far;
     std::set<int> blocked, lit;
@@ -42,7 +46,7 @@ struct Side {
 
 struct GeneratedPair {
     int nodes = 4, start = 0, goal = 1, visit = 2;
-    bool costs = false;
+    bool costs = false, rest = false; // rest: the action that restores (ready)
     Side robot, human;
 };
 
@@ -72,6 +76,8 @@ inline GeneratedPair generate_pair(unsigned seed) {
     r.jump = d.percent(30);
     r.far.insert({d.below(g.nodes), d.below(g.nodes)});
     r.visit_goal = d.percent(25);
+    g.rest = d.percent(30);
+    r.ready_pre = r.ready_del = g.rest;
     r.move_cost = d.between(1, 2);
     r.jump_cost = d.between(1, 3);
     Side h = r;
@@ -96,6 +102,10 @@ inline GeneratedPair generate_pair(unsigned seed) {
         h.far.insert({d.below(g.nodes), d.below(g.nodes)});
     if (d.percent(25))
         h.jump_cost = d.between(1, 3);
+    if (g.rest) { // people do not know the robot must rest: one or both of the pair
+        h.ready_pre = d.percent(30);
+        h.ready_del = !h.ready_pre && d.percent(50);
+    }
     for (int lit = d.between(0, 2); lit > 0; --lit)
         (d.percent(50) ? r : h).lit.insert(d.below(g.nodes));
     g.human = h;
@@ -111,12 +121,16 @@ inline std::string pair_domain(const GeneratedPair &g, const Side &s) {
     o << "(define (domain nav) (:requirements :strips :typing :negative-preconditions"
       << (g.costs ? " :action-costs" : "") << ")\n (:types node)\n"
       << " (:predicates (at ?n - node) (conn ?a ?b - node) (far ?a ?b - node)"
-         " (visited ?n - node) (blocked ?n - node) (lit ?n - node))\n";
+         " (visited ?n - node) (blocked ?n - node) (lit ?n - node) (ready))\n";
     if (g.costs)
         o << " (:functions (total-cost) - number)\n";
     o << " (:action move :parameters (?a ?b - node)\n  :precondition (and (at ?a) (conn ?a ?b)"
-      << (s.blocked_pre ? " (not (blocked ?b))" : "") << ")\n  :effect (and (at ?b) (not (at ?a))"
-      << (s.visit_effect ? " (visited ?b)" : "") << cost_text(g, s.move_cost) << "))\n";
+      << (s.blocked_pre ? " (not (blocked ?b))" : "") << (s.ready_pre ? " (ready)" : "")
+      << ")\n  :effect (and (at ?b) (not (at ?a))" << (s.visit_effect ? " (visited ?b)" : "")
+      << (s.ready_del ? " (not (ready))" : "") << cost_text(g, s.move_cost) << "))\n";
+    if (g.rest)
+        o << " (:action rest :parameters () :precondition (and) :effect (and (ready)"
+          << cost_text(g, 1) << "))\n";
     if (s.jump)
         o << " (:action jump :parameters (?x ?y - node)\n  :precondition (and (at ?x) (far ?x "
              "?y))\n  :effect (and (at ?y) (not (at ?x)) (visited ?y) (lit ?y)"
@@ -130,7 +144,7 @@ inline std::string pair_problem(const GeneratedPair &g, const Side &s, const std
     o << "(define (problem " << name << ") (:domain nav)\n (:objects";
     for (int n = 0; n < g.nodes; ++n)
         o << ' ' << gnode(n);
-    o << " - node)\n (:init (at " << gnode(g.start) << ")";
+    o << " - node)\n (:init (at " << gnode(g.start) << ")" << (g.rest ? " (ready)" : "");
     for (auto [a, b] : s.conn)
         o << " (conn " << gnode(a) << ' ' << gnode(b) << ")";
     for (auto [a, b] : s.far)
