@@ -14,6 +14,8 @@ PACKAGES=(
     cyclonedds-dev cyclonedds-tools libcycloneddsidl0
     coinor-libcbc-dev  # the witness search's hitting-set phase (integer programs)
     libsqlite3-dev libssl-dev  # the coordinator's durable evaluations (common/store)
+    python3-setuptools python3-wheel python3-venv python3-pip  # pip install clients/python
+    libsystemd-dev  # sd_notify: Type=notify units with a watchdog (common/service/systemd_notify.h)
     gnuplot-nox  # the interplay plot of tests/benchmarks/paper/run_interplay.py
     clang libclang-rt-14-dev  # tests/fuzz: libFuzzer, ASan and UBSan runtimes; the clang build
 )

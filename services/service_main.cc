@@ -1,11 +1,16 @@
 #include "service_main.h"
 
+#include "service/config_file.h"
+#include "service/systemd_notify.h"
+
 #include "bus/lcm_url.h"
 #include "bus/log.h"
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <iostream>
+#include <set>
 
 namespace envdesign::services {
 namespace {
@@ -13,6 +18,45 @@ namespace {
 std::atomic<int> g_signal{0}; // the one global: signal handlers cannot reach anything else
 
 extern "C" void on_signal(int signal) { g_signal = signal; }
+
+// The value of --config in `args`, if given.
+std::optional<std::string> config_path(const std::vector<std::string> &args) {
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        if (args[i] == "--config" && i + 1 < args.size())
+            return args[i + 1];
+        if (args[i].starts_with("--config="))
+            return args[i].substr(9);
+    }
+    return std::nullopt;
+}
+
+// The long flags named in `args` ("--name" or "--name=value").
+std::set<std::string> named_flags(const std::vector<std::string> &args) {
+    std::set<std::string> names;
+    for (std::size_t i = 1; i < args.size(); ++i)
+        if (args[i].starts_with("--") && args[i].size() > 2)
+            names.insert(args[i].substr(2, args[i].find('=') - 2));
+    return names;
+}
+
+// The settings of the config file as "--key=value" arguments, those the command line does
+// not override; throws service::ConfigError for a key that names no flag of `app`.
+std::vector<std::string> config_arguments(const CLI::App &app, const std::string &program,
+                                          const std::string &path,
+                                          const std::set<std::string> &on_command_line) {
+    static const std::set<std::string> NOT_SETTINGS = {"config", "check-config", "help"};
+    std::vector<std::string> out;
+    for (const envdesign::service::ConfigSetting &s : envdesign::service::read_config_file(path)) {
+        if (NOT_SETTINGS.count(s.key) || app.get_option_no_throw("--" + s.key) == nullptr)
+            throw envdesign::service::ConfigError(path + ":" + std::to_string(s.line) + ":" +
+                                                  std::to_string(s.key_column) +
+                                                  ": error: unknown setting '" + s.key + "' (" +
+                                                  program + " has no --" + s.key + ")");
+        if (!on_command_line.count(s.key))
+            out.push_back("--" + s.key + "=" + s.value);
+    }
+    return out;
+}
 
 } // namespace
 
@@ -25,6 +69,10 @@ void add_common_flags(CLI::App &app, CommonFlags &flags) {
                    "$ENVDESIGN_KEY_FILE; none: the bus is unauthenticated)");
     app.add_option("--log-level", flags.log_level, "trace|debug|info|warn|error|off")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}));
+    app.add_option("--config", flags.config,
+                   "settings file: 'flag-name = value' a line; command-line flags win");
+    app.add_flag("--check-config", flags.check_config,
+                 "check the flags and --config, then exit (0: all good)");
 }
 
 Service open_service(const std::string &role, const CommonFlags &flags) {
@@ -49,13 +97,32 @@ Service open_service(const std::string &role, const CommonFlags &flags) {
 
 std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
                                       const std::function<void()> &check) {
+    std::vector<std::string> args(argv, argv + argc);
     try {
-        app.parse(argc, argv);
+        if (auto path = config_path(args)) {
+            std::string program = args[0].substr(args[0].rfind('/') + 1);
+            std::vector<std::string> settings =
+                config_arguments(app, program, *path, named_flags(args));
+            args.insert(args.begin() + 1, settings.begin(), settings.end());
+        }
+    } catch (const envdesign::service::ConfigError &e) {
+        std::cerr << e.what() << std::endl;
+        return 2;
+    }
+    std::vector<char *> pointers;
+    for (auto &a : args)
+        pointers.push_back(a.data());
+    try {
+        app.parse(static_cast<int>(pointers.size()), pointers.data());
         if (check)
             check();
     } catch (const CLI::ParseError &e) {
         int code = app.exit(e);
         return e.get_exit_code() == 0 ? code : 2;
+    }
+    if (app.get_option("--check-config")->count() > 0) {
+        std::cout << args[0].substr(args[0].rfind('/') + 1) << ": configuration OK" << std::endl;
+        return 0;
     }
     return std::nullopt;
 }
@@ -86,6 +153,11 @@ int run_until_signal(Service &service, const std::function<int()> &tick) {
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
     std::signal(SIGPIPE, SIG_IGN);
+    envdesign::service::SystemdNotifier systemd;
+    // The watchdog is fed from this loop only, so no wait may outlast its period.
+    int max_wait_ms =
+        systemd.period() ? std::max<int>(1, systemd.period()->count() / 1000) : 1 << 30;
+    systemd.ready("on " + service.bus->url());
     int failures = 0; // in a row; a signal interrupting the wait fails one too
     int wait_ms = 0;
     while (g_signal == 0) {
@@ -93,11 +165,14 @@ int run_until_signal(Service &service, const std::function<int()> &tick) {
         failures = failed && g_signal == 0 ? failures + 1 : 0;
         if (failures >= 100) {
             service.log->error("request - | LCM keeps failing; stopping");
+            systemd.stopping();
             return 1;
         }
-        wait_ms = tick();
+        wait_ms = std::min(tick(), max_wait_ms);
+        systemd.tick();
     }
     service.log->info("request - | signal {}: stopping", g_signal.load());
+    systemd.stopping();
     return 0;
 }
 

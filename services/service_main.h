@@ -1,6 +1,7 @@
 #pragma once
-// What the service mains share: the common flags, logging, the bus, and the loop that runs
-// until SIGINT or SIGTERM.
+// What the service mains share: the common flags (and --config FILE, service/config_file.h),
+// logging, the bus, and the loop that runs until SIGINT or SIGTERM, telling systemd it is
+// ready and alive (service/systemd_notify.h).
 
 #include "bus/bus.h"
 
@@ -18,8 +19,11 @@ struct CommonFlags {
     std::string name;    // empty: ROLE/HOST/PID
     std::string log_level = "info";
     std::string key_file; // empty: $ENVDESIGN_KEY_FILE, else an unauthenticated bus
+    std::string config;   // read by parse_command_line
+    bool check_config = false;
 };
 
+// Adds --lcm-url, --name, --key-file, --log-level, --config FILE and --check-config.
 void add_common_flags(CLI::App &app, CommonFlags &flags);
 
 // The instance name, its logger and its bus; throws bus::BusError if LCM cannot start and
@@ -31,8 +35,10 @@ struct Service {
 };
 Service open_service(const std::string &role, const CommonFlags &flags);
 
-// Parses the command line, then runs `check` (which may throw CLI::ParseError too). Returns
-// nothing to go on, or the exit code: 0 after --help, 2 for bad flags (CLI11's message).
+// Parses the command line, with the settings of --config FILE before it (flags given on the
+// command line win), then runs `check` (which may throw CLI::ParseError too). Returns
+// nothing to go on, or the exit code: 0 after --help or --check-config, 2 for bad flags
+// (CLI11's message) or a bad config file ("FILE:LINE:COL: error: ..." on stderr).
 std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
                                       const std::function<void()> &check = {});
 
@@ -43,7 +49,8 @@ int serve(const std::string &role, const CommonFlags &flags,
           const std::function<int(Service &)> &run);
 
 // Runs `tick` after every bus.handle() (at least every `period_ms`) until SIGINT or SIGTERM.
-// Returns 0, or 1 if LCM failed.
+// Tells systemd READY=1 first, WATCHDOG=1 from the loop, STOPPING=1 at the end (no-ops
+// outside systemd). Returns 0, or 1 if LCM failed.
 int run_until_signal(Service &service, const std::function<void()> &tick, int period_ms = 20);
 // The same with a tick that says how long (ms) the loop may wait for a message before it
 // ticks again: a service with work under way asks to be ticked sooner.

@@ -13,6 +13,7 @@
 #include "pddl/parse_error.h"
 
 #include <CLI/CLI.hpp>
+#include <envdesign/version.h>
 
 #include <atomic>
 #include <chrono>
@@ -87,6 +88,7 @@ int publish(const Flags &f, const std::vector<arrivals_client::ReplayRow> &rows)
 int main(int argc, char **argv) {
     CLI::App app{"envdesign-arrivals: publish task arrivals on DDS (TaskArrival topic)"};
     Flags f;
+    app.set_version_flag("--version", envdesign::version_line("envdesign-arrivals"));
     auto *replay = app.add_option("--replay", f.replay, "CSV replay file (one arrival a line)");
     auto *task = app.add_option("--task", f.task, "publish --count arrivals of this task");
     replay->excludes(task);

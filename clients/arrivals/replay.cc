@@ -1,10 +1,10 @@
 #include "replay.h"
 
+#include "pddl/input_file.h"
 #include "pddl/parse_error.h"
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace envdesign::arrivals_client {
@@ -51,13 +51,14 @@ int64_t parse_integer(const Cell &cell, const Location &where) {
     return value;
 }
 
+// A problem file named in a cell: a regular file within the size bound (input_file.h), the
+// error at the cell.
 std::string read_text(const std::filesystem::path &path, const Location &where) {
-    std::ifstream in(path);
-    if (!in)
-        throw ParseError(where, "cannot read '" + path.string() + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    try {
+        return pddl::read_input_file(path.string());
+    } catch (const ParseError &e) {
+        throw ParseError(where, "cannot read '" + path.string() + "': " + e.message());
+    }
 }
 
 class Reader {
@@ -65,9 +66,8 @@ public:
     explicit Reader(const std::string &path) : path_(path) {}
 
     std::vector<ReplayRow> read() {
-        std::ifstream in(path_);
-        if (!in)
-            throw ParseError({path_, 0, 0}, "cannot open the replay file");
+        // Never a FIFO, a device or a directory, and bounded (input_file.h).
+        std::istringstream in(pddl::read_input_file(path_));
         std::string line;
         std::vector<ReplayRow> rows;
         for (int number = 1; std::getline(in, line); ++number) {

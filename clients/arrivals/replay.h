@@ -13,7 +13,9 @@
 // problem. utime and sequence cells are taken as written, absurd values included (that is
 // how tests send bad samples). problem_file and human_problem_file are paths relative to
 // the replay file; their text is read when the file is loaded (a new task's PDDL problem).
-// Cells are not quoted; a value cannot contain a comma.
+// Cells are not quoted; a value cannot contain a comma. The replay file and the problem
+// files are read as every input file is (pddl/input_file.h): regular files of bounded size
+// only, so a FIFO, a device or a directory is bad input instead of a read that never ends.
 
 #include "arrivals/arrival.h"
 
@@ -32,7 +34,8 @@ struct ReplayRow {
     std::string problem, human_problem; // texts, read from the files named
 };
 
-// Throws pddl::ParseError "FILE:LINE:COL: error: ..." for a file that cannot be read, a
+// Throws pddl::ParseError "FILE:LINE:COL: error: ..." for a file that cannot be read or is
+// not a regular file (FILE:0:0), a
 // header without `task`, an unknown column, a row with too many cells, a number that is not
 // one, or a problem file that cannot be read.
 std::vector<ReplayRow> read_replay_file(const std::string &path);

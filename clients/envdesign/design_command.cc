@@ -1,5 +1,8 @@
 #include "design_command.h"
 
+#include "cli_error.h"
+#include "design_warnings.h"
+
 #include "design/design_search.h"
 #include "design/design_spec.h"
 #include "design/explaining.h"
@@ -11,6 +14,7 @@
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
 
+#include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -70,6 +74,10 @@ void print_text(const design::DesignProblem &problem, const design::DesignResult
         print_terms("baseline: ", *result.baseline);
     for (std::size_t i = 0; i < problem.tasks.size(); ++i)
         print_task(problem, problem.tasks[i].name, result.best->tasks[i]);
+    for (std::size_t i = 0; i < result.ranking.size(); ++i)
+        std::cout << "rank " << i + 1 << ": "
+                  << design::to_string(problem, result.ranking[i].configuration) << " objective "
+                  << number(result.ranking[i].objective) << "\n";
     if (result.gap)
         std::cout << "proven gap: " << number(*result.gap) << "\n";
     for (const auto &note : result.notes)
@@ -86,17 +94,28 @@ design::DesignSearchOptions search_options(const DesignFlags &flags,
     options.batch_size = 4 * std::max(1, flags.workers);
     options.method = flags.search == "exhaustive" ? design::SearchMethod::EXHAUSTIVE
                                                   : design::SearchMethod::WITNESS;
+    options.ranking = flags.ranking;
     return options;
 }
 
-volatile std::sig_atomic_t interrupted = 0;
-void on_interrupt(int) { interrupted = 1; }
+// Set by SIGINT/SIGTERM only (a handler can reach nothing else); lock-free, so safe there.
+// A second Ctrl-C ends the process at once (a planner call may take long to return).
+std::atomic<bool> interrupted{false};
+extern "C" void on_interrupt(int signal) {
+    interrupted = true;
+    std::signal(signal, SIG_DFL);
+}
 
 // A client of the coordinator at `flags.connect`: the same search, run by the cluster.
 // Ctrl-C (or SIGTERM) cancels the request; the coordinator's best design so far is printed.
 int run_design_remote(const DesignFlags &flags) {
     if (flags.workers != 1)
         spdlog::warn("--workers does not apply with --connect: the cluster's planners work");
+    if (flags.ranking > 0) { // the request message carries no ranking yet
+        std::cerr << "--ranking: not available with --connect yet; run without --connect"
+                  << std::endl;
+        return 2;
+    }
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
     client::Options options;
@@ -107,13 +126,14 @@ int run_design_remote(const DesignFlags &flags) {
     options.heuristic = flags.heuristic;
     options.key_file = flags.key_file;
     options.on_progress = client::stderr_progress();
-    options.stop_requested = [] { return interrupted != 0; };
+    options.stop_requested = [] { return interrupted.load(); };
+    std::vector<std::string> warnings = remote_spec_warnings(flags.spec);
+    print_warnings(warnings);
     client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
-    if (result.status == "error") {
-        std::cerr << result.error << std::endl;
-        return result.exit_code;
-    }
-    std::cout << (flags.json ? result.json + "\n" : result.text) << std::flush;
+    if (result.status == "error")
+        throw CommandError(result.exit_code, result.error);
+    std::cout << (flags.json ? with_warnings(result.json, warnings) + "\n" : result.text)
+              << std::flush;
     if (result.exit_code == 4)
         spdlog::warn("{}; the design is the best found",
                      interrupted ? "interrupted" : "the time limit stopped the search");
@@ -137,6 +157,10 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
         .add_option("--search", flags.search,
                     "witness (exact, grows designs where they matter) | exhaustive (every subset)")
         ->check(CLI::IsMember({"witness", "exhaustive"}));
+    command
+        .add_option("--ranking", flags.ranking,
+                    "list the N best designs, best first (0: the best alone)")
+        ->check(CLI::Range(0, 100000));
     command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
         ->check(CLI::IsMember({"none", "relevant"}));
     command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
@@ -149,14 +173,15 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
 int run_design(const DesignFlags &flags) {
     if (!flags.connect.empty())
         return run_design_remote(flags);
-    design::DesignProblem problem;
-    try {
-        problem = design::load_design_problem(flags.spec);
-    } catch (const pddl::ParseError &e) {
-        std::cerr << e.what() << std::endl;
-        return 2;
-    }
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    design::DesignProblem problem = design::load_design_problem(flags.spec);
+    std::vector<std::string> warnings = problem.warnings;
+    print_warnings(warnings);
     design::DesignSearchOptions options = search_options(flags, problem);
+    // Ctrl-C (or SIGTERM) stops the search as a time limit would: the best design so far.
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+    options.deadline = options.deadline.with_stop(&interrupted);
     planning::PlannerOptions planner;
     planner.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
     design::LocalEvaluator evaluator(problem, flags.workers, planner);
@@ -170,17 +195,25 @@ int run_design(const DesignFlags &flags) {
     try {
         result = design::search_design(problem, evaluator, options,
                                        [&](const design::SearchProgress &p) { printer.update(p); });
-    } catch (const pddl::ParseError &e) { // a modified model that does not ground
-        std::cerr << "\n" << e.what() << std::endl;
-        return 2;
+    } catch (const pddl::ParseError &) { // a modified model that does not ground
+        std::cerr << "\n";
+        throw;
     }
     printer.finish(result);
-    if (flags.json)
-        std::cout << design::json_text(design::design_json(problem, result)) << std::endl;
-    else
+    auto unsolvable = unsolvable_task_warnings(problem, result, evaluator.planner(),
+                                               design::Deadline::in(10).with_stop(&interrupted));
+    print_warnings(unsolvable);
+    warnings.insert(warnings.end(), unsolvable.begin(), unsolvable.end());
+    if (flags.json) {
+        nlohmann::json out = design::design_json(problem, result);
+        if (!warnings.empty())
+            out["warnings"] = warnings;
+        std::cout << design::json_text(out) << std::endl;
+    } else
         print_text(problem, result);
     if (result.limit_reached)
-        spdlog::warn("the time limit stopped the search; the design is the best found");
+        spdlog::warn("{}; the design is the best found",
+                     interrupted ? "interrupted" : "the time limit stopped the search");
     return result.limit_reached ? 4 : 0;
 }
 

@@ -14,6 +14,7 @@ struct DesignFlags {
     double time_limit_s = -1; // < 0: the spec's time_limit_s
     int max_design_size = -1; // < 0: the spec's max_design_size
     std::string search = "witness";
+    int ranking = 0; // the N best designs (0: the best alone)
     std::string prune = "none";
     std::string heuristic = "lmcut";
     std::string connect;  // LCM URL of a running coordinator; --workers does not apply then

@@ -55,17 +55,12 @@ int run_explicable(const ExplicableFlags &flags) {
     planning::PlannerOptions options;
     options.heuristic = heuristics::parse_heuristic_kind(flags.heuristic);
     design::PlanCache planner(options);
-    design::TaskExplicability result;
-    try {
-        models = load_models(flags);
-        auto distance = flags.distance == "COST_DIFF" ? design::Distance::COST_DIFF
-                                                      : design::Distance::EXP_COST_DIFF;
-        result = design::evaluate_explicability(models, distance, planner,
-                                                design::Deadline::in(flags.time_limit_s), true);
-    } catch (const pddl::ParseError &e) {
-        std::cerr << e.what() << std::endl;
-        return 2;
-    }
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    models = load_models(flags);
+    auto distance = flags.distance == "COST_DIFF" ? design::Distance::COST_DIFF
+                                                  : design::Distance::EXP_COST_DIFF;
+    design::TaskExplicability result = design::evaluate_explicability(
+        models, distance, planner, design::Deadline::in(flags.time_limit_s), true);
     if (flags.json)
         std::cout << design::json_text(design::explicability_json(result)) << std::endl;
     else

@@ -1,13 +1,16 @@
 // envdesign: the command line. Each subcommand's flags and logic live in its own file;
 // this file only wires them up and maps failures to the exit codes of SPEC.md.
 
+#include "cli_error.h"
 #include "design_command.h"
 #include "explicable_command.h"
 #include "plan_command.h"
 #include "status_command.h"
 #include "validate_command.h"
+#include "watch_command.h"
 
 #include <CLI/CLI.hpp>
+#include <envdesign/version.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
@@ -40,8 +43,12 @@ int with_output_checked(int code) {
 } // namespace
 
 int main(int argc, char **argv) {
-    CLI::App app{"envdesign: environment design for explicable robot behaviour"};
+    CLI::App app{"envdesign: environment design for explicable robot behaviour", "envdesign"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", envdesign::version_line("envdesign"));
+    // Subcommands inherit this: a flag of the app (--log-level) may come after the subcommand.
+    app.fallthrough();
+    const bool json = envdesign::cli::json_requested(argc, argv);
     std::string log_level = "info";
     app.add_option("--log-level", log_level, "trace|debug|info|warn|error|off")
         ->check(CLI::IsMember({"trace", "debug", "info", "warn", "error", "critical", "off"}))
@@ -70,12 +77,21 @@ int main(int argc, char **argv) {
         app.add_subcommand("status", "the services on a bus (coordinator, planners, bridges)");
     envdesign::cli::add_status_flags(*status, status_flags);
 
+    envdesign::cli::WatchFlags watch_flags;
+    auto *watch = app.add_subcommand(
+        "watch", "print results, progress and task distribution estimates on a bus as they pass");
+    envdesign::cli::add_watch_flags(*watch, watch_flags);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp &e) {
         return app.exit(e);
     } catch (const CLI::ParseError &e) {
+        if (e.get_exit_code() == 0) // --version
+            return app.exit(e);
         app.exit(e);
+        if (json)
+            envdesign::cli::print_error_json(2, e.what());
         return 2;
     }
     set_up_logging(log_level);
@@ -90,12 +106,16 @@ int main(int argc, char **argv) {
             return with_output_checked(envdesign::cli::run_design(design_flags));
         if (*status)
             return with_output_checked(envdesign::cli::run_status(status_flags));
+        if (*watch)
+            return with_output_checked(envdesign::cli::run_watch(watch_flags));
+    } catch (const envdesign::pddl::ParseError &e) {
+        return envdesign::cli::report_failure(json, 2, e.message(), e.location());
+    } catch (const envdesign::cli::CommandError &e) {
+        return envdesign::cli::report_failure(json, e.exit_code(), e.what());
     } catch (const std::bad_alloc &) {
-        spdlog::error("out of memory");
-        return 4;
+        return envdesign::cli::report_failure(json, 4, "out of memory");
     } catch (const std::exception &e) {
-        spdlog::error("{}", e.what());
-        return 1;
+        return envdesign::cli::report_failure(json, 1, e.what());
     }
     return 1;
 }

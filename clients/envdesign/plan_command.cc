@@ -1,5 +1,7 @@
 #include "plan_command.h"
 
+#include "cli_error.h"
+
 #include "design/result_json.h"
 #include "pddl/parse_error.h"
 #include "planning/planner.h"
@@ -93,13 +95,8 @@ int run_plan(const PlanFlags &flags) {
     options.limits.time_limit_s = flags.time_limit_s;
     options.limits.memory_limit_bytes =
         static_cast<std::size_t>(flags.memory_limit_mb * 1024 * 1024);
-    planning::PlanReport report;
-    try {
-        report = planning::plan_files(flags.domain, flags.problem, options);
-    } catch (const pddl::ParseError &e) {
-        std::cerr << e.what() << std::endl;
-        return 2;
-    }
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    planning::PlanReport report = planning::plan_files(flags.domain, flags.problem, options);
     log_statistics(report);
     if (report.status == search::SearchStatus::FAILED)
         spdlog::info("proven unsolvable");
@@ -113,10 +110,8 @@ int run_plan(const PlanFlags &flags) {
         std::ofstream out(flags.plan_file);
         out << sas_plan(report);
         out.close(); // flushes: a full disk shows only here
-        if (!out) {
-            spdlog::error("cannot write the plan to {}", flags.plan_file);
-            return 1;
-        }
+        if (!out)
+            throw CommandError(1, "cannot write the plan to " + flags.plan_file);
     }
     return exit_code(report.status);
 }

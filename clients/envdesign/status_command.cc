@@ -1,5 +1,7 @@
 #include "status_command.h"
 
+#include "cli_error.h"
+
 #include "envdesign/client/client.h"
 
 #include <iostream>
@@ -23,15 +25,13 @@ int run_status(const StatusFlags &flags) {
     options.seconds = flags.seconds;
     options.key_file = flags.key_file;
     client::StatusReport report = client::listen_status(flags.connect, options);
-    if (report.exit_code == 2) {
-        std::cerr << report.error << std::endl;
-        return 2;
-    }
+    if (report.exit_code == 2)
+        throw CommandError(2, report.error);
     if (report.services > 0)
         std::cout << (flags.json ? report.json : report.text) << std::flush;
     if (report.exit_code != 0)
-        std::cerr << report.error << std::endl;
-    return report.exit_code;
+        throw CommandError(report.exit_code, report.error);
+    return 0;
 }
 
 } // namespace envdesign::cli

@@ -14,21 +14,17 @@ void add_validate_flags(CLI::App &command, ValidateFlags &flags) {
 }
 
 int run_validate(const ValidateFlags &flags) {
-    try {
-        pddl::Domain domain = pddl::parse_domain_file(flags.domain);
-        pddl::Problem problem = pddl::parse_problem_file(flags.problem, domain);
-        auto plan = validate::read_plan_file(flags.plan);
-        validate::Validation result = validate::validate_plan(domain, problem, plan);
-        if (!result.valid) {
-            std::cout << "invalid: " << result.error << "\n";
-            return 1;
-        }
-        std::cout << "valid: cost = " << result.cost << ", " << plan.size() << " steps\n";
-        return 0;
-    } catch (const pddl::ParseError &e) {
-        std::cerr << e.what() << std::endl;
-        return 2;
+    // Bad input throws pddl::ParseError: main() reports it (exit 2).
+    pddl::Domain domain = pddl::parse_domain_file(flags.domain);
+    pddl::Problem problem = pddl::parse_problem_file(flags.problem, domain);
+    auto plan = validate::read_plan_file(flags.plan);
+    validate::Validation result = validate::validate_plan(domain, problem, plan);
+    if (!result.valid) {
+        std::cout << "invalid: " << result.error << "\n";
+        return 1;
     }
+    std::cout << "valid: cost = " << result.cost << ", " << plan.size() << " steps\n";
+    return 0;
 }
 
 } // namespace envdesign::cli

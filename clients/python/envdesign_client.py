@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """envdesign's Python client: the optimal design of a spec file from a running coordinator.
 
-    python3 clients/python/envdesign_client.py SPEC [--connect URL] [--json] [--timeout S]
-        [--time-limit S] [--max-design-size K] [--prune none|relevant] [--heuristic H]
-        [--key-file FILE]
+    envdesign-client SPEC [--connect URL] [--json] [--timeout S] [--time-limit S]
+        [--max-design-size K] [--prune none|relevant] [--heuristic H] [--key-file FILE]
 
     import envdesign_client
     result = envdesign_client.design("spec.textproto", "udpm://239.255.76.67:7667?ttl=0")
-    print(result["objective"])
+    print(result["design"], result["objective"])
+
+Installed by `pip install --no-build-isolation clients/python` (with the message types), or
+run in the repository as `python3 clients/python/envdesign_client.py` after a build.
 
 Debian ships no LCM Python module, so this speaks LCM's UDP multicast protocol itself (small
 and fragmented messages, stdlib sockets) and uses the classes lcm-gen writes for our types
@@ -38,8 +40,16 @@ for candidate in (os.environ.get("ENVDESIGN_PYTHON_TYPES", ""), HERE,  # HERE: i
     if candidate and os.path.isdir(os.path.join(candidate, "envdesign")):
         sys.path.insert(0, candidate)
         break
-from envdesign import (cancel_t, design_progress_t, design_request_t,  # noqa: E402
-                       design_result_t, spec_file_t, spec_t)
+try:
+    from envdesign import (cancel_t, design_progress_t, design_request_t,  # noqa: E402
+                           design_result_t, spec_file_t, spec_t)
+except ImportError:
+    MISSING_TYPES = ("envdesign-client: the LCM message types (Python package 'envdesign') are "
+                     "missing: pip install --no-build-isolation clients/python, or build the "
+                     "repository (build/python) or set $ENVDESIGN_PYTHON_TYPES")
+    if __name__ == "__main__":
+        sys.exit(MISSING_TYPES)
+    raise ImportError(MISSING_TYPES) from None
 
 DEFAULT_URL = "udpm://239.255.76.67:7667?ttl=0"
 SHORT_MAGIC, FRAGMENT_MAGIC = 0x4C433032, 0x4C433033
@@ -51,16 +61,38 @@ class SpecError(Exception):
     """The spec or a file it names cannot be read (exit code 2)."""
 
 
+class UrlError(ValueError):
+    """The LCM URL cannot be used (exit code 2)."""
+
+
+def parse_url(url):
+    """(group, port, options) of a udpm:// URL; UrlError saying what is wrong otherwise."""
+    parsed = urllib.parse.urlparse(url)
+    if parsed.scheme != "udpm":
+        raise UrlError(f"bad LCM URL '{url}': only udpm:// URLs are supported")
+    try:
+        port = parsed.port or 7667
+        group = socket.inet_aton(parsed.hostname or "")
+    except (ValueError, OSError):
+        raise UrlError(f"bad LCM URL '{url}': expected udpm://GROUP:PORT?ttl=N, "
+                       "GROUP an IPv4 multicast address") from None
+    if not 224 <= group[0] <= 239:
+        raise UrlError(f"bad LCM URL '{url}': {parsed.hostname} is not a multicast address "
+                       "(224.0.0.0 to 239.255.255.255)")
+    options = dict(urllib.parse.parse_qsl(parsed.query))
+    try:
+        int(options.get("ttl", 0)), int(options.get("recv_buf_size", 0))
+    except ValueError:
+        raise UrlError(f"bad LCM URL '{url}': ttl and recv_buf_size must be integers") from None
+    return parsed.hostname, port, options
+
+
 class UdpmBus:
     """LCM over UDP multicast (LCM's udpm:// provider), as far as a client needs it."""
 
     def __init__(self, url, auth=None):
         self.auth = auth  # envdesign_auth.Auth, or None: unauthenticated
-        parsed = urllib.parse.urlparse(url)
-        if parsed.scheme != "udpm":
-            raise ValueError("only udpm:// URLs are supported, not " + url)
-        options = dict(urllib.parse.parse_qsl(parsed.query))
-        self.group, self.port = parsed.hostname, parsed.port or 7667
+        self.group, self.port, options = parse_url(url)
         self.sequence = random.getrandbits(31)
         self.tx = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self.tx.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_TTL, int(options.get("ttl", 0)))
@@ -268,12 +300,20 @@ class RemoteError(Exception):
         self.exit_code = exit_code
 
 
-def design(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none",
-           heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3, give_up_after_s=30,
-           key_file=None):
-    """SPEC.md's result (a dict) of designing `spec_path` on the coordinator at `url`.
-    Raises SpecError or envdesign_auth.KeyFileError (exit 2) or RemoteError (its exit_code:
-    1, 2 or 4)."""
+def design(spec_path, url=None, **options):
+    """SPEC.md's result (a dict, as `envdesign design --json` prints it) of designing
+    `spec_path` on the coordinator at `url` (None: $LCM_DEFAULT_URL, else LCM's default).
+    A search a limit stopped gives status "best_found" and limit_reached true. `options` are
+    design_result()'s. Raises SpecError, UrlError or envdesign_auth.KeyFileError (exit code 2),
+    RemoteError (its exit_code: 1, 2 or 4), OSError (the network)."""
+    return design_result(spec_path, url, **options)[0]
+
+
+def design_result(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none",
+                  heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3,
+                  give_up_after_s=30, key_file=None):
+    """(result dict, exit code): design() with SPEC.md's exit code (0, or 4 for a result a
+    time limit or timeout stopped)."""
     path = envdesign_auth.key_file_path(key_file)
     auth = envdesign_auth.Auth(envdesign_auth.load_key_file(path)) if path else None
     request = design_request_t()
@@ -370,15 +410,24 @@ def main():
                              f"{p.planners} planner(s)")
 
     try:
-        result, code = design(args.spec, args.connect, args.time_limit, args.max_design_size,
-                              args.prune, args.heuristic, args.timeout, progress,
-                              key_file=args.key_file)
-    except (SpecError, envdesign_auth.KeyFileError) as e:
+        result, code = design_result(args.spec, args.connect, args.time_limit,
+                                     args.max_design_size, args.prune, args.heuristic,
+                                     args.timeout, progress, key_file=args.key_file)
+    except SpecError as e:  # "FILE:LINE:COL: error: ..." as the other commands say it
         print(e, file=sys.stderr)
+        return 2
+    except (UrlError, envdesign_auth.KeyFileError) as e:
+        print(f"envdesign-client: {e}", file=sys.stderr)
         return 2
     except RemoteError as e:
         print(e, file=sys.stderr)
         return e.exit_code
+    except OSError as e:  # no multicast route, no network
+        print(f"envdesign-client: the bus cannot be used: {e}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("envdesign-client: interrupted", file=sys.stderr)
+        return 130
     if sys.stderr.isatty():
         sys.stderr.write("\r\033[K")
     if args.json:

@@ -1,6 +1,7 @@
 #include "bus/bus.h"
 
 #include "bus/log.h"
+#include "bus/udpm_guard.h"
 
 #include <bit>
 #include <utility>
@@ -76,7 +77,20 @@ Subscription Bus::subscribe_raw(const std::string &channel, RawHandler handler,
     if (!raw)
         throw BusError("cannot subscribe to " + channel);
     raw->setQueueCapacity(queue_capacity);
+    guard_receive_socket();
     return Subscription(this, raw, std::move(slot));
+}
+
+// LCM opens its udpm receive socket at the first subscription; the guard goes on it then.
+void Bus::guard_receive_socket() {
+    if (guarded_)
+        return;
+    guarded_ = true;
+    auto port = udpm_port(url_);
+    if (port && guard_udpm_fragments(*port) == 0)
+        logger_->warn("request - | no LCM receive socket found on port {}: forged fragments "
+                      "can reach LCM's reassembly unchecked",
+                      *port);
 }
 
 void Bus::trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channel, void *context) {

@@ -146,6 +146,7 @@ private:
                      const std::string &channel);
     void unsubscribe(lcm::Subscription *raw);
     void count_drop(const std::string &channel, Drop reason);
+    void guard_receive_socket();
 
     std::string url_;
     std::shared_ptr<spdlog::logger> logger_;
@@ -156,6 +157,7 @@ private:
     std::unique_ptr<Signer> signer_;     // under publish_mutex_
     std::unique_ptr<Verifier> verifier_; // bus thread
     std::uint64_t message_sender_ = 0;   // bus thread
+    bool guarded_ = false;               // udpm_guard.h, once LCM has its receive socket
     mutable std::mutex drops_mutex_;
     AuthDrops drops_;
 };

@@ -1,8 +1,8 @@
 #pragma once
 // The LCM channels of envdesign (SPEC.md "LCM"), each with its one message type. Clients
 // speak to the coordinator on the first four; the next five are between the coordinator and
-// its planners; every service sends its status on the last (services/README.md draws the
-// message flow).
+// its planners; then the bridge's two; every service sends its status on the last
+// (services/README.md draws the message flow; docs/messages.md lists the fields).
 
 namespace envdesign::bus {
 
@@ -19,11 +19,17 @@ inline constexpr const char *JOB = "ENVDESIGN_JOB";   // job_t
 inline constexpr const char *SPEC_NEED = "ENVDESIGN_SPEC_NEED";   // spec_need_t
 inline constexpr const char *EVALUATION = "ENVDESIGN_EVALUATION"; // evaluation_t
 inline constexpr const char *HEARTBEAT = "ENVDESIGN_HEARTBEAT";   // planner_heartbeat_t
+// envdesign-bridge -> anyone (common/bridge): each design problem's estimate of the task
+// distribution, and each re-evaluation it asks for (same type, with the reason)
+inline constexpr const char *TASK_DISTRIBUTION =
+    "ENVDESIGN_TASK_DISTRIBUTION";                                // task_distribution_t
+inline constexpr const char *REEVALUATE = "ENVDESIGN_REEVALUATE"; // task_distribution_t
 // every service -> anyone, once a second (bus/status.h)
 inline constexpr const char *STATUS = "ENVDESIGN_STATUS"; // service_status_t
 
 // Every channel above, for tools and tests.
-inline constexpr const char *ALL_CHANNELS[] = {REQUEST, CANCEL,    PROGRESS,   RESULT,    SPEC,
-                                               JOB,     SPEC_NEED, EVALUATION, HEARTBEAT, STATUS};
+inline constexpr const char *ALL_CHANNELS[] = {
+    REQUEST,    CANCEL,    PROGRESS,          RESULT,     SPEC,  JOB, SPEC_NEED,
+    EVALUATION, HEARTBEAT, TASK_DISTRIBUTION, REEVALUATE, STATUS};
 
 } // namespace envdesign::bus

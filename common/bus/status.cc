@@ -3,11 +3,13 @@
 #include "bus/channels.h"
 #include "bus/log.h"
 
+#include <envdesign/version.h>
+
 #include <algorithm>
 
 namespace envdesign::bus {
 
-std::string version() { return ENVDESIGN_VERSION; }
+std::string version() { return envdesign::VERSION; }
 
 void add_drop(envdesign::service_status_t &status, const std::string &channel,
               const std::string &reason, long long count) {
@@ -18,7 +20,8 @@ void add_drop(envdesign::service_status_t &status, const std::string &channel,
 }
 
 StatusPublisher::StatusPublisher(Bus &bus, std::string kind, std::string instance, double period_s)
-    : bus_(bus), kind_(std::move(kind)), instance_(std::move(instance)), period_s_(period_s) {}
+    : bus_(bus), kind_(std::move(kind)), instance_(std::move(instance)), period_s_(period_s),
+      started_utime_(now_utime()) {}
 
 bool StatusPublisher::tick(const Fill &fill) {
     auto now = Clock::now();
@@ -37,6 +40,7 @@ envdesign::service_status_t StatusPublisher::snapshot(const Fill &fill) const {
     s.kind = kind_;
     s.version = version();
     s.uptime_s = std::chrono::duration<double>(Clock::now() - started_).count();
+    s.started_utime = started_utime_;
     s.period_ms = static_cast<std::int32_t>(period_s_ * 1000);
     s.malformed = bus_.malformed();
     s.handler_errors = bus_.handler_errors();

@@ -43,6 +43,8 @@ public:
     bool tick(const Fill &fill);
     // The status tick() would publish now, without publishing it.
     envdesign::service_status_t snapshot(const Fill &fill) const;
+    // The wall clock when this publisher was made (the service's start), microseconds.
+    std::int64_t started_utime() const { return started_utime_; }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -51,6 +53,7 @@ private:
     std::string instance_;
     double period_s_;
     Clock::time_point started_ = Clock::now();
+    std::int64_t started_utime_;
     Clock::time_point last_{};
     bool sent_ = false;
 };

@@ -69,7 +69,11 @@ Coordinator::Coordinator(bus::Bus &bus, CoordinatorConfig config)
     : bus_(bus), config_(std::move(config)), router_(bus, config_.pool, config_.instance),
       specs_(config_.instance),
       stores_(config_.stored_evaluations, open_evaluation_file(config_, bus.log())),
-      status_(bus, "coordinator", config_.instance) {
+      status_(bus, "coordinator", config_.instance),
+      election_(config_.instance, status_.started_utime(), config_.election, Clock::now()) {
+    subscriptions_.push_back(bus_.subscribe<envdesign::service_status_t>(
+        bus::STATUS,
+        [this](const envdesign::service_status_t &s) { election_.heard(s, Clock::now()); }));
     subscriptions_.push_back(bus_.subscribe<design_request_t>(
         bus::REQUEST, [this](const design_request_t &r) { on_request(r); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::cancel_t>(
@@ -95,6 +99,11 @@ void Coordinator::on_request(const design_request_t &request) {
         return;
     }
     std::string name = bus::request_name(request.sender, request.request_id);
+    if (election_.role() == Role::STANDBY) {
+        bus_.log().debug("request {} | left to the active coordinator {}", name,
+                         election_.active());
+        return;
+    }
     if (auto it = open_.find(name); it != open_.end()) {
         std::lock_guard lock(stats_mutex_);
         ++stats_.repeats;
@@ -201,6 +210,7 @@ int Coordinator::tick() {
     if (now - last_tick_ < std::chrono::milliseconds(5))
         return wait_ms; // the loop calls after every message; housekeeping needs less
     last_tick_ = now;
+    elect(now);
     router_.tick();
     status_.tick([this](envdesign::service_status_t &s) { fill_status(s); });
     for (auto &[name, open] : open_)
@@ -217,11 +227,29 @@ CoordinatorStats Coordinator::stats() const {
     return stats_;
 }
 
+// Steps down when a coordinator that started earlier is heard: what was open here is
+// dropped unanswered, since that one heard the same requests (election.h).
+void Coordinator::elect(Clock::time_point now) {
+    auto change = election_.update(now);
+    if (!change)
+        return;
+    if (election_.role() != Role::STANDBY) {
+        bus_.log().info("request - | {}", *change);
+        return;
+    }
+    bus_.log().warn("request - | {}; {} request(s) open here are left to it", *change,
+                    open_.size());
+    waiting_.clear();
+    open_.clear(); // cancels and joins the searches; no result goes out
+    std::lock_guard lock(stats_mutex_);
+    stats_.open = 0;
+}
+
 void Coordinator::start_waiting() {
     int active = 0;
     for (const auto &[name, open] : open_)
         active += open.started ? 1 : 0;
-    while (active < config_.max_active && !waiting_.empty()) {
+    while (election_.role() == Role::ACTIVE && active < config_.max_active && !waiting_.empty()) {
         Open &open = open_.at(waiting_.front());
         waiting_.pop_front();
         open.run->start();
@@ -284,6 +312,7 @@ void Coordinator::fill_status(envdesign::service_status_t &status) const {
     status.planners = router_.pool().live_planners();
     status.jobs_in_flight = router_.pool().jobs_in_flight();
     status.stored_evaluations = static_cast<std::int64_t>(stores_.records());
+    status.role = to_string(election_.role());
     std::lock_guard lock(stats_mutex_);
     status.jobs_done = stats_.results;
 }

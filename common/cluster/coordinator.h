@@ -16,12 +16,14 @@
 //   while (running) { bus.handle(wait ms); wait = coordinator.tick(); }
 //
 // Its status (bus/status.h) goes out once a second, idle or not: requests open and waiting,
-// live planners, jobs in flight, evaluations stored, drops.
+// live planners, jobs in flight, evaluations stored, drops, and its role: one coordinator
+// per bus is active, the others stand by and take over when it falls silent (election.h).
 // Handlers and tick() run on the bus thread. Messages that make no sense (bad sizes, unknown
 // enums, a request without a client name) are counted in bus.malformed() and logged.
 
 #include "bus/bus.h"
 #include "bus/status.h"
+#include "cluster/election.h"
 #include "cluster/job_router.h"
 #include "cluster/request_run.h"
 #include "cluster/spec_chunks.h"
@@ -59,6 +61,7 @@ struct CoordinatorConfig {
     // fsync every commit: survives power loss too, at ~5 ms a record on a VM disk; without,
     // a record survives the process being killed at any instant (store/record_db.h).
     bool state_sync = false;
+    ElectionConfig election; // who runs requests when several coordinators share a bus
 };
 
 struct CoordinatorStats {
@@ -79,6 +82,7 @@ public:
     int tick();
     CoordinatorStats stats() const;
     const JobRouter &router() const { return router_; }
+    Role role() const { return election_.role(); }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -105,6 +109,7 @@ private:
     void publish_progress(Open &open, Clock::time_point now, bool force);
     void publish_result(envdesign::design_result_t result);
     void fill_status(envdesign::service_status_t &status) const;
+    void elect(Clock::time_point now);
 
     bus::Bus &bus_;
     CoordinatorConfig config_;
@@ -120,6 +125,7 @@ private:
     mutable std::mutex stats_mutex_;
     CoordinatorStats stats_;
     bus::StatusPublisher status_;
+    Election election_;
     std::vector<bus::Subscription> subscriptions_; // last: handlers stop before the rest goes
 };
 

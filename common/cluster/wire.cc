@@ -163,6 +163,10 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     e.human_plan_length = static_cast<std::int16_t>(e.human_plan.size());
     e.has_explanation = t.explanation.has_value();
     e.explanation = explanation_message(t.explanation.value_or(design::TaskExplanation{}));
+    e.has_optimal_actions = t.optimal_actions.has_value();
+    if (t.optimal_actions)
+        e.optimal_actions = *t.optimal_actions;
+    e.optimal_actions_length = static_cast<std::int32_t>(e.optimal_actions.size());
 }
 
 void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
@@ -195,6 +199,8 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
         t.human_plan = e.human_plan;
     if (e.has_explanation)
         t.explanation = explanation_value(e.explanation);
+    if (e.has_optimal_actions)
+        t.optimal_actions = e.optimal_actions;
     return answer;
 }
 

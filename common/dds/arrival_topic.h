@@ -17,6 +17,7 @@
 //   writer.write({"restaurant", "dock-1", "serve-g1", 1, now_us, "", ""});
 
 #include "arrivals/arrival.h"
+#include "arrivals/arrival_source.h"
 #include "dds/entity.h"
 
 #include <cstddef>
@@ -49,18 +50,19 @@ private:
     Entity writer_;
 };
 
-class ArrivalReader {
+// The bridge's arrival source in deployment (arrivals/arrival_source.h).
+class ArrivalReader : public arrivals::ArrivalSource {
 public:
     explicit ArrivalReader(dds_domainid_t domain, int history = READER_HISTORY);
 
     // Blocks until arrivals are waiting, wake() is called, or `timeout_s` passes.
     // True when something is there to take.
-    bool wait(double timeout_s);
+    bool wait(double timeout_s) override;
     // Takes up to `max` arrivals, appending them to `out`; returns how many. Samples that
     // carry no data (a writer going away) are skipped.
-    std::size_t take(std::vector<arrivals::Arrival> &out, std::size_t max);
+    std::size_t take(std::vector<arrivals::Arrival> &out, std::size_t max) override;
     // Makes a wait() in another thread return; thread-safe.
-    void wake();
+    void wake() override;
     int matched_writers() const;
 
 private:

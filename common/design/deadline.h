@@ -1,8 +1,11 @@
 #pragma once
 // A point in time after which the design search stops (the spec's time_limit_s or
-// --time-limit). Unlimited by default.
+// --time-limit). Unlimited by default. It may also watch a stop flag (Ctrl-C): once the flag
+// is set the deadline has passed, so the search stops as at a time limit and returns the
+// best design so far. A planner call already running finishes first (it sees only the time).
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <optional>
 
@@ -21,8 +24,18 @@ public:
         return d;
     }
 
+    // The same deadline, passed also once `*stop` is true; `stop` outlives every copy.
+    Deadline with_stop(const std::atomic<bool> *stop) const {
+        Deadline d = *this;
+        d.stop_ = stop;
+        return d;
+    }
+
     bool limited() const { return at_.has_value(); }
-    bool expired() const { return at_ && std::chrono::steady_clock::now() >= *at_; }
+    bool expired() const {
+        return (stop_ && stop_->load(std::memory_order_relaxed)) ||
+               (at_ && std::chrono::steady_clock::now() >= *at_);
+    }
     // Seconds left (at least a millisecond so a planner call gets a positive limit);
     // 0 means unlimited.
     double remaining_seconds() const {
@@ -35,6 +48,7 @@ public:
 
 private:
     std::optional<std::chrono::steady_clock::time_point> at_;
+    const std::atomic<bool> *stop_ = nullptr;
 };
 
 } // namespace envdesign::design

@@ -55,6 +55,9 @@ struct DesignProblem {
     ObjectiveWeights weights;
     int max_design_size = 0; // 0: no limit
     double time_limit_s = 0; // 0: no limit
+    // What the spec reader accepted but the author may not have meant ("SPEC:LINE:COL:
+    // warning: ..."): task probabilities that do not sum to 1.
+    std::vector<std::string> warnings;
 };
 
 } // namespace envdesign::design

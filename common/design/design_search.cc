@@ -32,7 +32,8 @@ class Search {
 public:
     Search(const DesignProblem &problem, Evaluator &evaluator, const DesignSearchOptions &options,
            const std::function<void(const SearchProgress &)> &progress)
-        : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress) {
+        : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
+          ranking_(options.ranking) {
         int n = static_cast<int>(problem.modifications.size());
         max_size_ = options.max_design_size > 0 ? std::min(options.max_design_size, n) : n;
         std::vector<double> costs;
@@ -56,6 +57,8 @@ public:
             counters.configurations_pruned = counters.configurations_total - generated_;
         result_.limit_reached = interrupted || limit_seen_;
         result_.optimal = !result_.limit_reached && counters.configurations_pruned == 0;
+        if (options_.ranking > 0)
+            result_.ranking = ranking_.designs();
         close_counters(counters, evaluator_, start);
         report();
         return std::move(result_);
@@ -139,13 +142,14 @@ private:
         return true;
     }
 
-    // True when no subset of size k or more can beat the best design found.
+    // True when no subset of size k or more can beat the best design found (or, with a
+    // ranking, enter it).
     bool sizes_excluded_from(int k) const {
         if (!result_.best)
             return false;
         double least = *std::min_element(cheapest_.begin() + k, cheapest_.begin() + max_size_ + 1);
         return clearly_greater(objective_lower_bound(problem_, least, {}),
-                               result_.best->objective.value);
+                               ranking_limit(result_, ranking_));
     }
 
     bool cannot_win(const Configuration &configuration,
@@ -155,7 +159,7 @@ private:
             return false;
         double bound = objective_lower_bound(problem_, design_cost(problem_, configuration), known,
                                              robot_cost_bounds);
-        return clearly_greater(bound, result_.best->objective.value);
+        return clearly_greater(bound, ranking_limit(result_, ranking_));
     }
 
     void flush(std::vector<Configuration> &batch) {
@@ -192,7 +196,7 @@ private:
         std::vector<TaskExplicability> tasks;
         for (auto &t : e.tasks)
             tasks.push_back(std::move(*t));
-        consider_design(problem_, e.configuration, std::move(tasks), result_);
+        consider_design(problem_, e.configuration, std::move(tasks), result_, ranking_);
         report();
     }
 
@@ -219,6 +223,7 @@ private:
     std::vector<double> cheapest_;
     bool costs_non_negative_ = true;
     DesignResult result_;
+    Ranking ranking_; // the N best (options.ranking), pruned against as the best alone is
     long long done_ = 0;
     long long progress_total_ = 0;
     long long generated_ = 0;
@@ -246,7 +251,7 @@ void close_counters(DesignCounters &counters, const Evaluator &evaluator,
 }
 
 void consider_design(const DesignProblem &problem, const Configuration &configuration,
-                     std::vector<TaskExplicability> tasks, DesignResult &result) {
+                     std::vector<TaskExplicability> tasks, DesignResult &result, Ranking &ranking) {
     EvaluatedDesign design;
     double cost = design_cost(problem, configuration);
     design.tasks = std::move(tasks);
@@ -254,8 +259,15 @@ void consider_design(const DesignProblem &problem, const Configuration &configur
     design.ranked = {design.objective.value, cost, configuration};
     if (configuration.empty())
         result.baseline = design;
+    ranking.offer(design.ranked);
     if (!result.best || ranks_before(design.ranked, result.best->ranked))
         result.best = std::move(design);
+}
+
+double ranking_limit(const DesignResult &result, const Ranking &ranking) {
+    if (!result.best)
+        return INF;
+    return std::max(result.best->objective.value, ranking.threshold());
 }
 
 DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,

@@ -22,10 +22,13 @@
 // (relevance.h); the same bounds apply.
 // The result is "optimal" only when every configuration was evaluated or skipped by these
 // bounds, no planner hit the time limit, and the pruning left no configuration out.
+// With options.ranking = N the result also lists the N best designs, and every bound above
+// compares with the N-th best objective found instead of the best (ranking.h).
 
 #include "design/design_problem.h"
 #include "design/evaluator.h"
 #include "design/objective.h"
+#include "design/ranking.h"
 
 #include <chrono>
 #include <functional>
@@ -51,6 +54,9 @@ struct DesignSearchOptions {
     // Witness search: try the hitting-set phase (hitting_set.h) before the best-first
     // search; off only to test or measure the best-first search alone.
     bool hitting_sets = true;
+    // The N best designs, best first, in ranks_before order (DesignResult::ranking); 0 or 1:
+    // only the best. The searches then prune against the N-th best found so far.
+    int ranking = 0;
 };
 
 struct SearchProgress {
@@ -87,6 +93,9 @@ struct DesignResult {
     bool limit_reached = false;              // the deadline stopped the search
     std::optional<EvaluatedDesign> best;     // unset only if not even {} was evaluated
     std::optional<EvaluatedDesign> baseline; // the empty design
+    // The best designs found, best first (ranks_before), at most max(1, options.ranking);
+    // proven the true best ones when `optimal`.
+    std::vector<RankedDesign> ranking;
     // When a limit stopped the search: the best objective minus the least bound still open
     // (an optimal design is no better than best - gap).
     std::optional<double> gap;
@@ -100,10 +109,14 @@ struct DesignResult {
 void close_counters(DesignCounters &counters, const Evaluator &evaluator,
                     std::chrono::steady_clock::time_point start);
 
-// Shared by the searches: the evaluated design `configuration` (every task known), and
-// whether it replaces result.best (and result.baseline for {}).
+// Shared by the searches: the evaluated design `configuration` (every task known), whether
+// it replaces result.best (and result.baseline for {}), and its place in `ranking`.
 void consider_design(const DesignProblem &problem, const Configuration &configuration,
-                     std::vector<TaskExplicability> tasks, DesignResult &result);
+                     std::vector<TaskExplicability> tasks, DesignResult &result, Ranking &ranking);
+
+// The objective a design must not clearly exceed to become the best or enter `ranking`
+// (INF while either is still open).
+double ranking_limit(const DesignResult &result, const Ranking &ranking);
 
 DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
                            const DesignSearchOptions &options,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <sstream>
 
 namespace envdesign::design {
 namespace {
@@ -118,6 +119,8 @@ private:
             fail("task[0].probability", "the task probabilities sum to zero");
         for (auto &task : problem_.tasks)
             task.probability /= total;
+        if (auto warning = probability_warning(spec_))
+            problem_.warnings.push_back(*warning);
     }
 
     void load_weights() {
@@ -142,11 +145,6 @@ private:
         w.behaviour = behaviour_from_proto(m_.robot_behaviour());
         w.explanation_cost =
             weight(m_.has_explanation_cost(), m_.explanation_cost(), 1, "explanation_cost");
-        if (w.behaviour != RobotBehaviour::EXPLICABLE && w.behaviour != RobotBehaviour::EXPLAINING)
-            fail("robot_behaviour",
-                 "robot_behaviour " +
-                     proto::DesignProblem::RobotBehaviour_Name(m_.robot_behaviour()) +
-                     " is not supported by this build yet");
         if (m_.max_design_size() < 0)
             fail("max_design_size", "max_design_size must be >= 0");
         problem_.max_design_size = m_.max_design_size();
@@ -180,6 +178,31 @@ private:
 };
 
 } // namespace
+
+// Probabilities that do not sum to 1 are most often a typo: say what was made of them.
+std::optional<std::string> probability_warning(const SpecFile &spec) {
+    double total = 0;
+    bool written = false; // a task gives its probability (else all weigh the same, silently)
+    for (const auto &t : spec.message.task()) {
+        double p = t.has_probability() ? t.probability() : 1.0;
+        if (!(p >= 0) || !std::isfinite(p))
+            return std::nullopt; // bad input, not a warning
+        total += p;
+        written = written || t.has_probability();
+    }
+    if (!written || !(total > 0) || std::abs(total - 1) <= 1e-9)
+        return std::nullopt;
+    std::ostringstream text;
+    text << spec.at("task[0].probability").to_string() << ": warning: the task "
+         << "probabilities sum to " << total << ", not 1; they were normalised to";
+    const char *separator = " ";
+    for (const auto &t : spec.message.task()) {
+        text << separator << t.name() << " "
+             << (t.has_probability() ? t.probability() : 1.0) / total;
+        separator = ", ";
+    }
+    return text.str();
+}
 
 DesignProblem load_design_problem(const SpecFile &spec) { return Loader(spec).load(); }
 

@@ -14,11 +14,19 @@
 #include "design/design_problem.h"
 #include "design/spec_reader.h"
 
+#include <optional>
 #include <string>
 
 namespace envdesign::design {
 
 DesignProblem load_design_problem(const std::string &spec_path);
+
+// "SPEC:LINE:COL: warning: the task probabilities sum to 1.1, not 1; they were normalised
+// to a 0.545455, b 0.454545" when the probabilities written in `spec` do not sum to 1;
+// nothing when they do, when no task writes one, or when they are bad input (negative, not
+// finite, a zero sum: load_design_problem says so). load_design_problem keeps it in
+// DesignProblem::warnings; a client of a coordinator asks here.
+std::optional<std::string> probability_warning(const SpecFile &spec);
 
 // From a spec already read (e.g. received over the bus); relative paths are resolved
 // against the directory of spec.path.

@@ -58,6 +58,7 @@ public:
         return list;
     }
     bool ok() const { return ok_ && at_ == in_.size(); }
+    bool at_end() const { return at_ == in_.size(); }
 
 private:
     bool need(std::uint64_t n) {
@@ -114,6 +115,10 @@ std::string encode_evaluation(const TaskExplicability &e) {
     w.real(x.robot_optimal_cost);
     w.texts(x.robot_plan);
     w.texts(x.differences);
+    if (e.optimal_actions) { // COST_OPTIMAL modes only: records of the others stay as they were
+        w.byte(1);
+        w.texts(*e.optimal_actions);
+    }
     return w.take();
 }
 
@@ -146,6 +151,11 @@ std::optional<TaskExplicability> decode_evaluation(const std::string &bytes) {
     x.differences = r.texts();
     if (has_explanation)
         e.explanation = std::move(x);
+    if (!r.at_end()) { // optional, appended by COST_OPTIMAL modes
+        if (r.byte() != 1)
+            return std::nullopt;
+        e.optimal_actions = r.texts();
+    }
     if (!r.ok())
         return std::nullopt;
     return e;

@@ -146,7 +146,8 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
             cols.push_back(i);
         Cbc_addRow(m, "", n, cols.data(), coefs.data(), 'L', max_size_);
     }
-    Cbc_setCutoff(m, cutoff - offset + margin(cutoff));
+    if (std::isfinite(cutoff)) // INF: a ranking not full yet, every design is wanted
+        Cbc_setCutoff(m, cutoff - offset + margin(cutoff));
     Cbc_solve(m);
 
     Answer answer;

@@ -59,7 +59,7 @@ public:
         double bound = 0; // the least relaxed objective outside the cones
     };
     // The design outside the cones with the least relaxed objective, if it is at most
-    // `cutoff`; NONE when every such design is above it.
+    // `cutoff` (INF: any); NONE when every such design is above it.
     Answer least(const std::vector<Cone> &excluded, double cutoff, const Deadline &deadline) const;
 
     // The margin above the best objective within which designs are still evaluated.

@@ -88,7 +88,7 @@ private:
             pddl::Location where = here();
             std::string key = snake_case(string());
             std::string child = path.empty() ? key : path + "." + key;
-            out_.emplace(child, where);
+            out_[child] = where; // a duplicate key: the later one, the one protobuf met last
             skip_space();
             if (peek() == ':')
                 advance();

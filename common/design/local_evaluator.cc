@@ -1,5 +1,6 @@
 #include "design/local_evaluator.h"
 
+#include "design/cost_optimal.h"
 #include "design/dispatcher.h"
 #include "design/explaining.h"
 #include "design/explicability.h"
@@ -85,6 +86,8 @@ LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
 TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
                                                 const Deadline &deadline) {
     ModelPair models = configured_models(problem_, configuration, task);
+    if (is_cost_optimal(problem_.weights.behaviour))
+        return evaluate_cost_optimal(models, problem_.weights, cache_, deadline);
     return evaluate_task_behaviour(models, problem_.weights, cache_, deadline);
 }
 

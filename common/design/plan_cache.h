@@ -57,6 +57,7 @@ public:
                             const Deadline &deadline);
 
     CacheCounters counters() const;
+    const planning::PlannerOptions &options() const { return options_; }
 
 private:
     using Answers = std::map<TaskKey, std::shared_future<PlanOutcome>>;

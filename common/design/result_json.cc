@@ -111,6 +111,13 @@ nlohmann::json design_json(const DesignProblem &problem, const DesignResult &res
     }
     out["baseline"] =
         result.baseline ? objective_json(problem, *result.baseline) : nlohmann::json();
+    if (!result.ranking.empty()) { // --ranking N: the N best, best first
+        nlohmann::json ranking = nlohmann::json::array();
+        for (const RankedDesign &d : result.ranking)
+            ranking.push_back({{"design", design_names(problem, d.configuration)},
+                               {"objective", json_number(d.objective)}});
+        out["ranking"] = std::move(ranking);
+    }
     out["configurations_evaluated"] = c.configurations_evaluated;
     out["planner_runs"] = c.evaluator.planner_runs;
     out["seconds"] = c.seconds;

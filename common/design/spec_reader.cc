@@ -8,6 +8,7 @@
 #include <google/protobuf/util/json_util.h>
 #include <nlohmann/json.hpp>
 
+#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -132,6 +133,46 @@ pddl::Location location_of_byte(const std::string &text, std::size_t byte,
     return where;
 }
 
+// protobuf's JSON parser names the place as "(task[1].probability): invalid value ...",
+// "(modification[0]) colour: Cannot find field." or, at the top, ": invalid value ..."; some
+// messages and older versions as "colour: ..." alone. The error points at that key (for the
+// last form, the first key so named).
+pddl::ParseError json_message_error(const std::string &message, const JsonLocations &locations) {
+    const std::string unknown = ": Cannot find field.";
+    std::string path, rest;
+    if (!message.empty() && message[0] == '(' && message.find(')') != std::string::npos) {
+        auto close = message.find(')');
+        path = snake_case(message.substr(1, close - 1));
+        rest = message.substr(close + 1);
+    } else if (!message.empty() && message[0] == ':') {
+        rest = message;
+    } else {
+        auto colon = message.find(':');
+        std::string key = colon == std::string::npos ? "" : message.substr(0, colon);
+        return pddl::ParseError(locations.locate_key(key), message);
+    }
+    rest.erase(0, rest.find_first_not_of(" :"));
+    if (rest.size() > unknown.size() &&
+        rest.compare(rest.size() - unknown.size(), unknown.size(), unknown) == 0) {
+        std::string key = snake_case(rest.substr(0, rest.size() - unknown.size()));
+        std::string field = path.empty() ? key : path + "." + key;
+        return pddl::ParseError(locations.locate(field), "unknown field '" + field + "'");
+    }
+    // A duplicate key, or two members of a oneof (two kinds in one edit): at the second key.
+    static const std::regex twice(R"(oneof field '_?(\w+)' is already set\. Cannot set '(\w+)')");
+    std::smatch m;
+    if (std::regex_search(rest, m, twice)) {
+        std::string key = snake_case(m[2].str());
+        std::string field = path.empty() ? key : path + "." + key;
+        std::string why = m[1].str() == m[2].str()
+                              ? "'" + field + "' is given twice"
+                              : "only one field of '" + m[1].str() + "' may be given: '" + field +
+                                    "' is a second one";
+        return pddl::ParseError(locations.locate(field), why);
+    }
+    return pddl::ParseError(locations.locate(path), (path.empty() ? "" : path + ": ") + rest);
+}
+
 SpecFile read_json(const std::string &text, const std::string &path) {
     check_json_limits(text, path); // first: the readers below recurse or throw without a line
     try {
@@ -149,12 +190,8 @@ SpecFile read_json(const std::string &text, const std::string &path) {
     auto locations = std::make_unique<JsonLocations>(path, index_json_positions(text, path));
     SpecFile spec{path, {}, nullptr};
     auto status = gp::util::JsonStringToMessage(text, &spec.message);
-    if (!status.ok()) {
-        std::string message(status.message());
-        auto colon = message.find(':');
-        std::string key = colon == std::string::npos ? "" : message.substr(0, colon);
-        throw pddl::ParseError(locations->locate_key(key), message);
-    }
+    if (!status.ok())
+        throw json_message_error(std::string(status.message()), *locations);
     spec.locations = std::move(locations);
     return spec;
 }

@@ -44,6 +44,11 @@ struct TaskExplicability {
     // Set when the spec's robot_behaviour is EXPLAINING: the other option of the task
     // (explaining.h chooses between acting explicably and explaining).
     std::optional<TaskExplanation> explanation;
+    // COST_OPTIMAL and COST_OPTIMAL_BEST_CASE: every ground action of some cost-optimal plan
+    // of P_R, sorted, unique. These are the evaluation's robot witnesses there (all optimal
+    // plans count, not only `plan`): a restricting modification touching none of them keeps
+    // the set of optimal plans (witness.h). Unset: not known.
+    std::optional<std::vector<std::string>> optimal_actions;
 };
 
 } // namespace envdesign::design

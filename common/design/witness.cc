@@ -1,6 +1,7 @@
 #include "design/witness.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <map>
 #include <set>
@@ -263,9 +264,22 @@ WitnessTouch TouchIndex::touching(const Configuration &configuration, int task,
         out.known = false;
         return out;
     }
+    // COST_OPTIMAL with a finite worst case: a human-model edit that makes any optimal robot
+    // plan invalid for people changes it, so on the human side every action of every
+    // optimal plan is a witness (docs/design-search.md). Everywhere else `plan` is enough.
+    const std::vector<std::string> *human_witness = &evaluation.plan;
+    if (problem_.weights.behaviour == RobotBehaviour::COST_OPTIMAL &&
+        std::isfinite(evaluation.human_plan_cost)) {
+        if (!evaluation.optimal_actions) {
+            out.known = false;
+            return out;
+        }
+        human_witness = &*evaluation.optimal_actions;
+    }
     std::vector<int> explicable;
     for (int side : {ROBOT, HUMAN}) {
-        const PlanTouch &touch = plan_touch(side, configuration, task, evaluation.plan);
+        const PlanTouch &touch =
+            plan_touch(side, configuration, task, side == ROBOT ? evaluation.plan : *human_witness);
         out.known = out.known && touch.known;
         explicable.insert(explicable.end(), touch.mods.begin(), touch.mods.end());
     }

@@ -28,7 +28,9 @@
 // schema the plan uses (or removes it, or one of its ground actions), an init atom that one
 // of its steps or the goal needs (remove_init) or needs absent (add_init). add_goal touches
 // every witness of the model it edits. Robot-model edits touch P_mod's witness only, human
-// ones both P_mod's and P_H's.
+// ones both P_mod's and P_H's. For COST_OPTIMAL(_BEST_CASE) robots `plan` is the worst (best)
+// cost-optimal plan and stands in for P_mod's witness; with a finite worst case, its human
+// side is every action of every optimal plan (TaskExplicability::optimal_actions).
 
 #include "design/configuration.h"
 #include "design/task_evaluation.h"

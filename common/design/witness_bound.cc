@@ -12,7 +12,8 @@ bool contains(const std::vector<int> &sorted, int value) {
 
 SupersetBound::SupersetBound(const DesignProblem &problem, const TouchIndex &index)
     : problem_(problem), index_(index), tasks_(static_cast<int>(problem.tasks.size())),
-      pool_(tasks_), horizon_(discounted_horizon(problem.weights)) {
+      pool_(tasks_), horizon_(discounted_horizon(problem.weights)),
+      floors_hold_(problem.weights.behaviour == RobotBehaviour::EXPLICABLE) {
     for (int m = 0; m < index.size(); ++m) {
         const ModificationClass &c = index.of(m);
         bool negative = problem.weights.beta * problem.modifications[m].cost < 0;
@@ -65,7 +66,8 @@ void SupersetBound::learn(const Configuration &c, int t, const TaskExplicability
         pool_[t].insert(std::move(p));
     };
     keep(*e.human_plan, *e.human_optimal_cost);
-    keep(e.plan, e.human_plan_cost);
+    if (std::isfinite(e.human_plan_cost)) // else (COST_OPTIMAL) `plan` is not a human plan
+        keep(e.plan, e.human_plan_cost);
 }
 
 // When `m` touches only the human's witness of `r`, and a known plan as cheap is still
@@ -130,7 +132,7 @@ double SupersetBound::restricted_bound(const Node &node) const {
             continue;
         }
         for (const PooledPlan &plan : pool_[t]) {
-            if (plan.cost >= node.explicable_floor[t])
+            if (plan.cost >= floor(node, t))
                 break;
             if (!valid_in(plan, c))
                 continue;
@@ -160,8 +162,8 @@ double SupersetBound::restricted_bound(const Node &node) const {
             if (s.plans[t].empty())
                 continue;
             double weight = w.alpha * horizon_ * problem_.tasks[t].probability;
-            extra += level_bound(s.plans[t], &s.share[t * n], node.explicable_floor[t], weight,
-                                 least_ie, s.used[t]) -
+            extra += level_bound(s.plans[t], &s.share[t * n], floor(node, t), weight, least_ie,
+                                 s.used[t]) -
                      weight * least_ie; // the least value is counted already
             for (int m : s.used[t])
                 ++s.users[m];

@@ -84,6 +84,10 @@ private:
     double level_bound(const std::vector<const PooledPlan *> &plans, const double *share,
                        double floor, double weight, double least_ie, std::vector<int> &used) const;
     bool valid_in(const PooledPlan &plan, const Configuration &c) const;
+    // Task t's floor on c_H(pi) in the supersets, or 0 where floors do not hold.
+    double floor(const Node &node, int t) const {
+        return floors_hold_ ? node.explicable_floor[t] : 0.0;
+    }
 
     // Buffers of restricted_bound, kept between calls.
     struct Scratch {
@@ -117,6 +121,10 @@ private:
     std::vector<int> negative_;              // of negative weighted cost
     std::vector<std::set<PooledPlan>> pool_; // per task, by cost
     double horizon_;                         // f_T(x) / x
+    // Removing plans never lowers the most explicable plan's human cost, but it can lower
+    // the worst cost-optimal plan's (COST_OPTIMAL), and raising c_R* can bring cheaper ones
+    // (COST_OPTIMAL_BEST_CASE): there the IE term is bounded by its least value only.
+    bool floors_hold_;
     mutable Scratch scratch_;
 };
 

@@ -11,10 +11,11 @@ namespace envdesign::design::witness {
 
 DesignLearner::DesignLearner(const DesignProblem &problem, Evaluator &evaluator,
                              const DesignSearchOptions &options, const TouchIndex &index,
-                             SupersetBound &bound, DesignResult &result,
+                             SupersetBound &bound, DesignResult &result, Ranking &ranking,
                              std::function<void()> report)
     : problem_(problem), evaluator_(evaluator), options_(options), index_(index), bound_(bound),
-      result_(result), report_(std::move(report)), tasks_(static_cast<int>(problem.tasks.size())),
+      result_(result), ranking_(ranking), report_(std::move(report)),
+      tasks_(static_cast<int>(problem.tasks.size())),
       max_size_(options.max_design_size > 0 ? options.max_design_size : index.size()),
       lower_bound_(-INF) {}
 
@@ -87,11 +88,11 @@ void DesignLearner::probe_shortcuts() {
     }
 }
 
-// Excludes `design` and the supersets that rank after it from the hitting-set phase.
-void DesignLearner::consider(const Configuration &design, const std::vector<Record> &records) {
+Cone cone_of(const DesignProblem &problem, const SupersetBound &bound, const Configuration &design,
+             const std::vector<Record> &records) {
     Cone cone{design, std::vector<int>{}};
-    for (int t = 0; t < tasks_ && cone.escapes; ++t) {
-        if (problem_.tasks[t].probability <= 0)
+    for (std::size_t t = 0; t < records.size() && cone.escapes; ++t) {
+        if (problem.tasks[t].probability <= 0)
             continue;
         if (!records[t] || !records[t]->touch.known) {
             cone.escapes.reset();
@@ -102,22 +103,48 @@ void DesignLearner::consider(const Configuration &design, const std::vector<Reco
                        records[t]->touch.all.end(), std::back_inserter(both));
         cone.escapes = std::move(both);
     }
-    for (int m : bound_.always()) // not restricting: never in a cone (none when it applies)
+    for (int m : bound.always()) // not restricting or of negative cost: never in a cone
         if (cone.escapes && !contains(*cone.escapes, m))
             cone.escapes->insert(std::upper_bound(cone.escapes->begin(), cone.escapes->end(), m),
                                  m);
-    considered_.push_back(std::move(cone));
+    return cone;
+}
+
+void offer_cone_of(const DesignProblem &problem, const SupersetBound &bound,
+                   const Configuration &design, const std::vector<Record> &records, int max_size,
+                   Ranking &ranking) {
+    Cone cone = cone_of(problem, bound, design, records);
+    if (!cone.escapes)
+        return;
+    std::vector<const TaskExplicability *> tasks;
+    for (const Record &r : records) {
+        if (!r)
+            return;
+        tasks.push_back(&r->evaluation);
+    }
+    std::vector<int> free;
+    for (int m = 0; m < static_cast<int>(problem.modifications.size()); ++m)
+        if (!contains(design, m) && !contains(*cone.escapes, m))
+            free.push_back(m);
+    offer_cone(problem, design, tasks, free, max_size, ranking);
+}
+
+// Excludes `design` and the supersets that rank after it from the hitting-set phase.
+void DesignLearner::consider(const Configuration &design, const std::vector<Record> &records) {
+    considered_.push_back(cone_of(problem_, bound_, design, records));
 }
 
 // The relaxation of hitting_set.h holds when every modification is restricting and of
 // non-negative cost (no modification is added everywhere), the weights are non-negative
-// and the empty design's objective is finite (its floors are known).
+// and the empty design's objective is finite (its floors are known). Its floors are floors on
+// the most explicable plan's human cost, so it applies to EXPLICABLE robots only
+// (witness_bound.h: floors_hold).
 bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
-    return options_.hitting_sets && root_ && result_.best &&
-           std::isfinite(result_.best->objective.value) && bound_.always().empty() &&
-           w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 && result_.baseline &&
-           std::isfinite(result_.baseline->objective.value);
+    return options_.hitting_sets && w.behaviour == RobotBehaviour::EXPLICABLE && root_ &&
+           result_.best && std::isfinite(result_.best->objective.value) &&
+           bound_.always().empty() && w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 &&
+           result_.baseline && std::isfinite(result_.baseline->objective.value);
 }
 
 bool DesignLearner::prove_by_hitting_sets() {
@@ -151,8 +178,11 @@ bool DesignLearner::prove_by_hitting_sets() {
     }
     while (!options_.deadline.expired()) {
         double best = result_.best->objective.value;
+        // With a ranking, every design that may enter it must be evaluated (or lie in a
+        // cone, whose members are offered as they are found): the cutoff is the N-th best.
+        double limit = ranking_limit(result_, ranking_);
         auto answer =
-            master.least(considered_, best + HittingSetMaster::margin(best), options_.deadline);
+            master.least(considered_, limit + HittingSetMaster::margin(limit), options_.deadline);
         if (answer.status == HittingSetMaster::Answer::NONE) {
             // A design a limit stopped earlier (a probe) is in no cone: it was picked again,
             // or its relaxed objective is above the best. Either way the proof holds.
@@ -225,7 +255,9 @@ bool DesignLearner::evaluate(const Configuration &design, bool inherit) {
         report_();
     if (static_cast<int>(design.size()) <= max_size_) {
         consider(design, known_.back().second);
-        consider_design(problem_, design, std::move(tasks), result_);
+        consider_design(problem_, design, std::move(tasks), result_, ranking_);
+        if (ranking_.size() > 1)
+            offer_cone_of(problem_, bound_, design, known_.back().second, max_size_, ranking_);
     }
     return true;
 }

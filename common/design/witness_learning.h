@@ -17,12 +17,24 @@
 
 namespace envdesign::design::witness {
 
+// `design` and the supersets that provably rank after it (hitting_set.h), from the records
+// of its tasks.
+Cone cone_of(const DesignProblem &problem, const SupersetBound &bound, const Configuration &design,
+             const std::vector<Record> &records);
+
+// Offers `design` + E to `ranking` for every E in its cone (ranking.h's offer_cone): the
+// members' tasks are those of `design`, so no planning. Nothing when a record is missing
+// or a task's objective is infinite. `max_size`: the largest design (no 0).
+void offer_cone_of(const DesignProblem &problem, const SupersetBound &bound,
+                   const Configuration &design, const std::vector<Record> &records, int max_size,
+                   Ranking &ranking);
+
 class DesignLearner {
 public:
     // All must outlive the learner; `report` shows progress after each design.
     DesignLearner(const DesignProblem &problem, Evaluator &evaluator,
                   const DesignSearchOptions &options, const TouchIndex &index, SupersetBound &bound,
-                  DesignResult &result, std::function<void()> report);
+                  DesignResult &result, Ranking &ranking, std::function<void()> report);
 
     // Remembers an evaluated configuration of the best-first search (the root first).
     void evaluated(const Node &node);
@@ -52,6 +64,7 @@ private:
     const TouchIndex &index_;
     SupersetBound &bound_;
     DesignResult &result_;
+    Ranking &ranking_;
     std::function<void()> report_;
     int tasks_;
     int max_size_;

@@ -1,5 +1,6 @@
 #include "design/witness_search.h"
 
+#include "design/cost_optimal.h"
 #include "design/witness_bound.h"
 #include "design/witness_learning.h"
 
@@ -16,6 +17,7 @@ namespace {
 
 using witness::contains;
 using witness::Node;
+using witness::offer_cone_of;
 using witness::PooledPlan;
 using witness::raise_floor;
 using witness::Record;
@@ -63,8 +65,9 @@ public:
                   const DesignSearchOptions &options,
                   const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          index_(problem), bound_(problem, index_),
-          learner_(problem, evaluator, options, index_, bound_, result_, [this] { report(); }),
+          index_(problem), bound_(problem, index_), ranking_(options.ranking),
+          learner_(problem, evaluator, options, index_, bound_, result_, ranking_,
+                   [this] { report(); }),
           tasks_(static_cast<int>(problem.tasks.size())) {
         for (int m : bound_.always()) {
             const ModificationClass &c = index_.of(m);
@@ -74,6 +77,12 @@ public:
                 (c.restricting ? "has a negative cost" : "is not restricting (" + c.why_not + ")") +
                 ": added to every configuration");
         }
+        if (is_cost_optimal(problem.weights.behaviour))
+            result_.notes.push_back(
+                "robot_behaviour " + behaviour_name(problem.weights.behaviour) +
+                ": the witnesses are the worst (best) optimal plan and, for a finite worst case, "
+                "every action of every optimal plan; the IE term is bounded by its least "
+                "value, and there is no hitting-set phase (docs/design-search.md)");
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
     }
 
@@ -114,6 +123,8 @@ public:
             least = std::max(least, learner_.lower_bound()); // both hold for every design
             result_.gap = result_.best ? std::max(0.0, result_.best->objective.value - least) : INF;
         }
+        if (options_.ranking > 0)
+            result_.ranking = ranking_.designs();
         auto &counters = result_.counters;
         counters.configurations_total = generated_ + learner_.designs();
         close_counters(counters, evaluator_, start);
@@ -127,7 +138,7 @@ private:
         std::vector<Node> batch;
         while (!open_.empty() &&
                static_cast<int>(batch.size()) < std::max(1, options_.batch_size)) {
-            if (result_.best && clearly_greater(open_.top().bound, result_.best->objective.value)) {
+            if (clearly_greater(open_.top().bound, ranking_limit(result_, ranking_))) {
                 skip(static_cast<long long>(open_.size())); // every other bound is larger
                 open_.clear();
                 break;
@@ -246,7 +257,10 @@ private:
             std::vector<TaskExplicability> copies;
             for (const auto *e : evaluations)
                 copies.push_back(*e);
-            consider_design(problem_, node.configuration, std::move(copies), result_);
+            consider_design(problem_, node.configuration, std::move(copies), result_, ranking_);
+            if (ranking_.size() > 1) // its cone may hold the next ones (docs: "Ranking")
+                offer_cone_of(problem_, bound_, node.configuration, node.tasks, max_size_,
+                              ranking_);
         }
         if (!blind(node)) {
             node.bound = bound_(node);
@@ -335,14 +349,15 @@ private:
     }
 
     // Whether a design of objective >= `bound` with at least `size` modifications could still
-    // rank before the best one.
+    // rank before the best one, or enter the ranking.
     bool can_win(double bound, std::size_t size) const {
         if (!result_.best)
             return true;
         double best = result_.best->objective.value;
         if (nearly_equal(bound, best))
-            return size <= result_.best->ranked.configuration.size();
-        return bound < best;
+            return size <= result_.best->ranked.configuration.size() ||
+                   ranking_.may_enter(bound, size);
+        return bound < best || ranking_.may_enter(bound, size);
     }
 
     void skip(long long count) {
@@ -371,6 +386,7 @@ private:
     TouchIndex index_;
     witness::SupersetBound bound_;
     DesignResult result_;
+    Ranking ranking_; // the N best (options.ranking)
     witness::DesignLearner learner_;
     int tasks_;
     int max_size_ = 0;

@@ -39,7 +39,7 @@ public:
         task_.has_action_costs = problem_.minimize_total_cost;
         sort_unique(task_.initial_state);
         sort_unique(task_.goal);
-        fact_atoms_.resize(task_.num_facts());  // complements and markers are not atoms
+        fact_atoms_.resize(task_.num_facts()); // complements and markers are not atoms
         return std::move(task_);
     }
 
@@ -89,8 +89,9 @@ private:
                 continue;
             pddl::Atom term{c.function->predicate, {}, {}};
             for (const auto &arg : c.function->args)
-                term.args.push_back(arg[0] == '?' ? r_.objects[instance.arguments[parameter_index(&instance, arg)]]
-                                                  : arg);
+                term.args.push_back(
+                    arg[0] == '?' ? r_.objects[instance.arguments[parameter_index(&instance, arg)]]
+                                  : arg);
             auto value = problem_.function_values.find(term);
             if (value == problem_.function_values.end())
                 throw pddl::ParseError({problem_.file, 0, 0},
@@ -98,7 +99,7 @@ private:
                                            ", the cost of action '" + action.name + "'");
             total += value->second;
         }
-        if (total > std::numeric_limits<Cost>::max() / 2)  // f = g + h must not overflow either
+        if (total > std::numeric_limits<Cost>::max() / 2) // f = g + h must not overflow either
             throw pddl::ParseError(action.location, "the cost of an instance of action '" +
                                                         action.name + "' is too large");
         return static_cast<Cost>(total);
@@ -113,7 +114,7 @@ private:
         op.name += ")";
         for (const auto &l : action.precondition) {
             if (l.atom.predicate == "=")
-                continue;  // checked during exploration
+                continue; // checked during exploration
             FactId f = fact_of(key(l.atom, &instance));
             if (f >= 0)
                 op.pre.push_back(l.negated ? complement_of(f) : f);
@@ -128,7 +129,8 @@ private:
         sort_unique(op.pre);
         sort_unique(op.add);
         sort_unique(op.del);
-        std::erase_if(op.del, [&](FactId f) { return std::binary_search(op.add.begin(), op.add.end(), f); });
+        std::erase_if(
+            op.del, [&](FactId f) { return std::binary_search(op.add.begin(), op.add.end(), f); });
         task_.operators.push_back(std::move(op));
     }
 
@@ -145,7 +147,7 @@ private:
             bool reached = r_.is_reached(atom);
             if (fluent && reached)
                 task_.goal.push_back(l.negated ? complement_of(fact_of(atom)) : fact_of(atom));
-            else if (l.negated == reached)  // static and false, or never reachable
+            else if (l.negated == reached) // static and false, or never reachable
                 unreachable = true;
         }
         if (unreachable) {
@@ -195,10 +197,10 @@ void add_complement_groups(GroundTask &task, const std::map<FactId, FactId> &com
             task.mutex_groups.push_back({fact, complement});
 }
 
-}  // namespace
+} // namespace
 
 GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
-                  GroundingStatistics *statistics, const StopCheck &stop) {
+                  GroundingStatistics *statistics, const StopCheck &stop, bool prune_irrelevant) {
     Reachability reachability = explore(domain, problem, stop);
     TaskBuilder builder(domain, problem, reachability);
     GroundTask task = builder.build();
@@ -212,7 +214,8 @@ GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
     }
     remove_unreachable(task);
     remove_always_true(task);
-    remove_irrelevant(task);
+    if (prune_irrelevant)
+        remove_irrelevant(task);
     if (statistics) {
         statistics->relevant_facts = task.num_facts();
         statistics->relevant_operators = task.num_operators();
@@ -220,4 +223,4 @@ GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
     return task;
 }
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

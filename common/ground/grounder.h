@@ -15,16 +15,19 @@
 namespace envdesign::ground {
 
 struct GroundingStatistics {
-    int reachable_atoms = 0;     // fluent and static, before relevance pruning
-    int reachable_actions = 0;   // before relevance pruning
+    int reachable_atoms = 0;   // fluent and static, before relevance pruning
+    int reachable_actions = 0; // before relevance pruning
     int relevant_facts = 0;
     int relevant_operators = 0;
 };
 
 // Throws pddl::ParseError when the input is wrong in a way only grounding reveals
 // (e.g. an action cost refers to a function value the problem does not give), and
-// GroundingStopped when `stop` says so (ground/stop.h).
+// GroundingStopped when `stop` says so (ground/stop.h). `prune_irrelevant` false keeps the
+// operators that change no fact the goal needs: every plan of the model stays a plan of the
+// task (the design engine follows arbitrary action sequences in it, design/worst_case.h).
 GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
-                  GroundingStatistics *statistics = nullptr, const StopCheck &stop = {});
+                  GroundingStatistics *statistics = nullptr, const StopCheck &stop = {},
+                  bool prune_irrelevant = true);
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

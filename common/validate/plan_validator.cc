@@ -122,6 +122,10 @@ private:
         return total;
     }
 
+public:
+    std::vector<std::string> atoms() const { return {state_.begin(), state_.end()}; }
+
+private:
     const pddl::Domain &domain_;
     const pddl::Problem &problem_;
     std::set<std::string> state_;
@@ -143,6 +147,8 @@ Validation validate_plan(const pddl::Domain &domain, const pddl::Problem &proble
             return result;
         }
     }
+    result.executed_cost = simulator.cost();
+    result.final_state = simulator.atoms();
     for (const auto &goal : problem.goal) {
         if (!simulator.holds(goal, {})) {
             result.error = "goal " + goal.to_string() + " does not hold at the end of the plan";

@@ -12,9 +12,13 @@ namespace envdesign::validate {
 
 struct Validation {
     bool valid = false;
-    long long cost = 0;      // the plan's metric value (steps when the problem has no metric)
-    int failed_step = -1;    // 0-based index of the offending step, -1 if none
-    std::string error;       // why it is invalid, naming the step and the atom
+    long long cost = 0;   // the plan's metric value (steps when the problem has no metric)
+    int failed_step = -1; // 0-based index of the offending step, -1 if none
+    std::string error;    // why it is invalid, naming the step and the atom
+    // When every step applied (valid, or only the goal missing): the cost of the steps and
+    // the atoms true after the last one, sorted (tests follow states with these).
+    long long executed_cost = 0;
+    std::vector<std::string> final_state;
 };
 
 // `plan` holds actions as "(name obj ...)".
@@ -25,4 +29,4 @@ Validation validate_plan(const pddl::Domain &domain, const pddl::Problem &proble
 // Throws pddl::ParseError if the file cannot be read or a line is not an action.
 std::vector<std::string> read_plan_file(const std::string &path);
 
-}  // namespace envdesign::validate
+} // namespace envdesign::validate

@@ -1,12 +1,14 @@
 // envdesign-bridge: task arrivals from DDS in, task distribution estimates and
-// re-evaluations out on LCM (README.md; bridge.h has the overview).
+// re-evaluations out on LCM (README.md; common/bridge/bridge.h has the overview).
 
-#include "bridge.h"
-
+#include "bridge/bridge.h"
 #include "bus/status.h"
+#include "dds/arrival_topic.h"
 #include "pddl/parse_error.h"
 #include "service_main.h"
 #include "store/state_dir.h"
+
+#include <envdesign/version.h>
 
 #include <iostream>
 
@@ -18,6 +20,8 @@ struct Flags {
     std::vector<std::string> problems; // ID=SPEC
     std::string mode = "local", estimator = "window:200", heuristic = "lmcut";
     std::string state_dir;
+    int domain = 0;                           // DDS domain id
+    int reader_history = dds::READER_HISTORY; // per (problem, site)
 };
 
 void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
@@ -30,7 +34,7 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
                    "ask envdesign-coordinator")
         ->check(CLI::IsMember({"local", "coordinator"}))
         ->capture_default_str();
-    app.add_option("--domain", c.domain, "DDS domain id")->check(CLI::Range(0, 230));
+    app.add_option("--domain", f.domain, "DDS domain id")->check(CLI::Range(0, 230));
     app.add_option("--estimator", f.estimator,
                    "window:N (last N arrivals) or decay:H "
                    "(half-life H arrivals)")
@@ -62,7 +66,7 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
     app.add_option("--publish-hz", c.publish_hz, "estimates per problem per second, at most")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    app.add_option("--reader-history", c.reader_history, "DDS reader depth per site")
+    app.add_option("--reader-history", f.reader_history, "DDS reader depth per site")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     app.add_option("--workers", c.local.workers, "planner threads (--redesign local)")
@@ -117,6 +121,7 @@ int main(int argc, char **argv) {
     CLI::App app{"envdesign-bridge: task arrivals (DDS) -> task distribution and designs (LCM)"};
     services::CommonFlags common;
     services::add_common_flags(app, common);
+    app.set_version_flag("--version", version_line("envdesign-bridge"));
     Flags flags;
     bridge::BridgeConfig config;
     add_flags(app, flags, config);
@@ -132,7 +137,9 @@ int main(int argc, char **argv) {
                 store::open_state_file(flags.state_dir, options, *service.log);
         }
         try {
-            bridge::Bridge bridge(*service.bus, config);
+            dds::ArrivalReader reader(flags.domain, flags.reader_history);
+            bridge::SystemClock clock;
+            bridge::Bridge bridge(*service.bus, config, reader, clock);
             bus::StatusPublisher status(*service.bus, "bridge", service.instance);
             return services::run_until_signal(service, [&] {
                 bridge.tick();

@@ -4,11 +4,14 @@
 #include "cluster/spec_loader.h"
 #include "service_main.h"
 
+#include <envdesign/version.h>
+
 int main(int argc, char **argv) {
     using namespace envdesign;
     CLI::App app{"envdesign-coordinator: design requests in, progress and results out"};
     services::CommonFlags common;
     services::add_common_flags(app, common);
+    app.set_version_flag("--version", version_line("envdesign-coordinator"));
     cluster::CoordinatorConfig config;
     config.work_dir = cluster::default_work_dir();
     app.add_option("--max-requests", config.max_active, "requests searched at once")
@@ -59,6 +62,16 @@ int main(int argc, char **argv) {
     app.add_flag("--state-fsync", config.state_sync,
                  "fsync the evaluation file at every record (survives power loss, not only a "
                  "killed process; slower)");
+    config.election.discovery_s = 1.5; // hear the other coordinators' statuses (1 Hz) first
+    app.add_option("--discovery", config.election.discovery_s,
+                   "seconds after start spent listening for other coordinators before "
+                   "running requests")
+        ->check(CLI::Range(0.0, 60.0))
+        ->capture_default_str();
+    app.add_option("--takeover-after", config.election.takeover_after_s,
+                   "standby: seconds of silence from the active coordinator before taking over")
+        ->check(CLI::Range(1.5, 3600.0))
+        ->capture_default_str();
     app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))

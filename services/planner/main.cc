@@ -4,11 +4,14 @@
 #include "cluster/spec_loader.h"
 #include "service_main.h"
 
+#include <envdesign/version.h>
+
 int main(int argc, char **argv) {
     using namespace envdesign;
     CLI::App app{"envdesign-planner: jobs in, evaluations out"};
     services::CommonFlags common;
     services::add_common_flags(app, common);
+    app.set_version_flag("--version", version_line("envdesign-planner"));
     cluster::PlannerConfig config;
     config.work_dir = cluster::default_work_dir();
     app.add_option("--workers", config.workers, "jobs worked on at once (threads)")

@@ -107,6 +107,10 @@ TEST(Cluster, LostDuplicatedAndLateAnswersChangeNothing) {
         flaky = std::make_shared<FlakyPlanner>(bus, spec);
         return [flaky] { flaky->tick(); };
     });
+    // The planner's subscription must go before the bus does: drop this reference first
+    // (the cluster's tick holds the other). Outliving the cluster, it unsubscribed from a
+    // destroyed Bus and now and then aborted in pthread_mutex_lock.
+    std::shared_ptr<void> release(nullptr, [&](void *) { flaky.reset(); });
     auto result = cluster.request(request_of(spec, 1));
     ASSERT_EQ(result.exit_code, 0) << result.error;
     expect_same_design(json_of(result), local_result(spec));

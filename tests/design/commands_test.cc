@@ -114,5 +114,37 @@ TEST(DesignCommand, OneSummaryLineOnStderrWhenNotATerminal) {
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
 }
 
+// Setting (c)'s three best (tests/design/restaurant_test.cc works them out by hand): the two
+// pairs that close every shortcut (f_10 + 60 + 18.75), then one barrier on G2's shortcut
+// (f_10 e^2 + 30 + 18.75), the same from both searches.
+TEST(DesignCommand, RankingOfSettingC) {
+    const double f = 6.513215599;
+    for (std::string search : {"witness", "exhaustive"}) {
+        auto out = run_json("design " + RESTAURANT +
+                                "c-two-tasks-t10.textproto --json --ranking 3 --search " + search,
+                            0);
+        EXPECT_EQ(out["status"], "optimal");
+        ASSERT_EQ(out["ranking"].size(), 3u) << search;
+        EXPECT_EQ(out["ranking"][0]["design"], out["design"]);
+        EXPECT_EQ(out["ranking"][1]["design"], nlohmann::json({"barrier-01-02", "barrier-11-12"}));
+        EXPECT_EQ(out["ranking"][2]["design"], nlohmann::json({"barrier-00-01"}));
+        EXPECT_NEAR(out["ranking"][1]["objective"].get<double>(), f + 78.75, 1e-6);
+        EXPECT_NEAR(out["ranking"][2]["objective"].get<double>(), f * std::exp(2.0) + 48.75, 1e-6);
+    }
+    // Without --ranking there is no "ranking"; a negative N or one with --connect is refused.
+    auto plain = run_json("design " + RESTAURANT + "c-two-tasks-t10.textproto --json", 0);
+    EXPECT_FALSE(plain.contains("ranking"));
+    CommandResult negative =
+        run_envdesign("design " + RESTAURANT + "c-two-tasks-t10.textproto --ranking -1");
+    EXPECT_EQ(negative.exit_code, 2) << negative.out;
+    EXPECT_NE(negative.out.find("--ranking"), std::string::npos) << negative.out;
+    CommandResult remote = run_envdesign("design " + RESTAURANT +
+                                         "c-two-tasks-t10.textproto --ranking 2 --connect "
+                                         "memq://");
+    EXPECT_EQ(remote.exit_code, 2) << remote.out;
+    EXPECT_NE(remote.out.find("--ranking: not available with --connect"), std::string::npos)
+        << remote.out;
+}
+
 } // namespace
 } // namespace envdesign::testing

@@ -161,6 +161,65 @@ TEST_P(AgainstExhaustive, BoundsNeverChangeTheAnswer) {
               k.configurations_total);
 }
 
+// Every subset's objective written out again, sorted by SPEC.md's rules: the reference
+// ranking (ties within 1e-9: fewer modifications, then lower cost, then spec order).
+std::vector<RankedDesign> every_subset_ranked(const DesignProblem &p, const Script &script,
+                                              int max_size) {
+    int n = static_cast<int>(p.modifications.size());
+    double f = (1 - std::pow(p.weights.gamma, p.weights.horizon)) / (1 - p.weights.gamma);
+    std::vector<RankedDesign> all;
+    for (int mask = 0; mask < (1 << n); ++mask) {
+        Configuration c;
+        double cost = 0;
+        for (int m = 0; m < n; ++m)
+            if (mask >> m & 1)
+                c.push_back(m), cost += p.modifications[m].cost;
+        if (max_size > 0 && static_cast<int>(c.size()) > max_size)
+            continue;
+        auto tasks = script(c);
+        double ie = 0, rc = 0;
+        for (std::size_t t = 0; t < tasks.size(); ++t)
+            ie += p.tasks[t].probability * tasks[t].ie,
+                rc += p.tasks[t].probability * tasks[t].robot_cost;
+        all.push_back({p.weights.alpha * f * ie + p.weights.beta * cost +
+                           p.weights.kappa * p.weights.horizon * rc,
+                       cost, c});
+    }
+    std::sort(all.begin(), all.end(), [](const RankedDesign &a, const RankedDesign &b) {
+        if (std::abs(a.objective - b.objective) > 1e-9 * std::max(1.0, std::abs(a.objective)))
+            return a.objective < b.objective;
+        if (a.configuration.size() != b.configuration.size())
+            return a.configuration.size() < b.configuration.size();
+        if (a.design_cost != b.design_cost)
+            return a.design_cost < b.design_cost;
+        return a.configuration < b.configuration;
+    });
+    return all;
+}
+
+// --ranking N: the bounds compare with the N-th best, and never change the N best.
+TEST_P(AgainstExhaustive, BoundsNeverChangeTheRanking) {
+    const Setting s = GetParam();
+    DesignProblem p = synthetic({1, 2, 0.5, 3, 1}, {0.3, 0.7}, {1, s.beta, 0.25, 0.9, s.horizon});
+    std::vector<RankedDesign> all = every_subset_ranked(p, landscape, s.max_size);
+    for (int n : {2, 3, 7, 40}) {
+        ScriptedEvaluator evaluator(landscape);
+        DesignSearchOptions options = exhaustive_search();
+        options.max_design_size = s.max_size;
+        options.ranking = n;
+        DesignResult r = search_design(p, evaluator, options);
+        EXPECT_TRUE(r.optimal);
+        ASSERT_EQ(r.ranking.size(), std::min<std::size_t>(n, all.size())) << "N = " << n;
+        for (std::size_t i = 0; i < r.ranking.size(); ++i) {
+            EXPECT_EQ(r.ranking[i].configuration, all[i].configuration)
+                << "N = " << n << ", rank " << i + 1;
+            EXPECT_NEAR(r.ranking[i].objective, all[i].objective, 1e-9);
+        }
+        if (n == 40) // more than every subset: nothing may be skipped
+            EXPECT_EQ(r.counters.configurations_skipped + r.counters.configurations_abandoned, 0);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Settings, AgainstExhaustive,
                          ::testing::Values(Setting{30, 1, 0}, Setting{30, 10, 0}, Setting{1, 10, 0},
                                            Setting{0.25, 10, 0}, Setting{0.25, 10, 2},
@@ -220,6 +279,47 @@ TEST(DesignSearch, ATimeLimitGivesTheBestFoundSoFar) {
     ASSERT_TRUE(r.best);
     EXPECT_LE(r.best->ranked.configuration.size(), 1u);
     EXPECT_TRUE(r.baseline);
+}
+
+// Designs of infinite objective are not ranked: only {m1} has a plan for every task.
+TEST(DesignSearch, InfiniteObjectivesAreNotRanked) {
+    DesignProblem p = synthetic({100, 100}, {1}, {1, 1, 1, 1, 1});
+    ScriptedEvaluator evaluator([](const Configuration &c) {
+        if (c == Configuration{1})
+            return std::vector{solved(1, 1)};
+        TaskExplicability t;
+        t.status = ExplicabilityStatus::INEXPLICABLE;
+        return std::vector{t};
+    });
+    DesignSearchOptions options = exhaustive_search();
+    options.ranking = 3;
+    DesignResult r = search_design(p, evaluator, options);
+    ASSERT_EQ(r.ranking.size(), 1u);
+    EXPECT_EQ(r.ranking[0].configuration, Configuration{1});
+    EXPECT_NEAR(r.ranking[0].objective, 1 + 100 + 1, 1e-9); // IE 1, C 100, robot cost 1
+}
+
+// A limit leaves the best ones found: real designs, in order, not proven.
+TEST(DesignSearch, ATimeLimitGivesTheBestRankingFoundSoFar) {
+    DesignProblem p = synthetic({1, 2, 0.5, 3, 1}, {0.3, 0.7}, {1, 0.25, 0.25, 0.9, 10});
+    ScriptedEvaluator evaluator(landscape, 9); // the budget runs out during size 1
+    DesignSearchOptions options = exhaustive_search();
+    options.ranking = 3;
+    DesignResult r = search_design(p, evaluator, options);
+    EXPECT_FALSE(r.optimal);
+    ASSERT_EQ(r.ranking.size(), 3u); // {} and 3 designs of size 1 were evaluated in full
+    EXPECT_EQ(r.ranking[0].configuration, r.best->ranked.configuration);
+    std::vector<RankedDesign> all = every_subset_ranked(p, landscape, 0);
+    for (std::size_t i = 0; i < r.ranking.size(); ++i) {
+        auto same = std::find_if(all.begin(), all.end(), [&](const RankedDesign &d) {
+            return d.configuration == r.ranking[i].configuration;
+        });
+        ASSERT_NE(same, all.end());
+        EXPECT_NEAR(r.ranking[i].objective, same->objective, 1e-9);
+        EXPECT_LE(r.ranking[i].configuration.size(), 1u);
+        if (i > 0)
+            EXPECT_TRUE(ranks_before(r.ranking[i - 1], r.ranking[i]));
+    }
 }
 
 // Relevance says: from {} only m0 and m2; from {m0} only m1; from anything else nothing.

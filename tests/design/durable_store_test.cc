@@ -53,6 +53,21 @@ TEST(EvaluationRecord, ReadsBackWhatWasWritten) {
     EXPECT_EQ(decode_robot_bound(encode_robot_bound(INF)), INF);
 }
 
+// COST_OPTIMAL modes keep every action of the optimal plans (the witnesses); the records of
+// the other modes stay byte for byte what they were.
+TEST(EvaluationRecord, KeepsTheOptimalActionsOfCostOptimalModes) {
+    TaskExplicability e = solved();
+    std::string without = encode_evaluation(e);
+    e.optimal_actions = std::vector<std::string>{"(move c00 c10)", "(move c10 c11)", "(wait)"};
+    std::string with = encode_evaluation(e);
+    EXPECT_EQ(with.substr(0, without.size()), without);
+    auto back = decode_evaluation(with);
+    ASSERT_TRUE(back);
+    EXPECT_EQ(back->optimal_actions, e.optimal_actions);
+    EXPECT_FALSE(decode_evaluation(without)->optimal_actions);
+    EXPECT_FALSE(decode_evaluation(with.substr(0, with.size() - 1)));
+}
+
 TEST(EvaluationRecord, RefusesWhatItDidNotWrite) {
     std::string bytes = encode_evaluation(solved());
     EXPECT_FALSE(decode_evaluation(bytes.substr(0, bytes.size() - 1))); // cut short

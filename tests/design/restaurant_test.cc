@@ -122,5 +122,79 @@ TEST(Restaurant, PruneRelevantFollowsThePlansNodeByNode) {
               (std::vector<std::string>{"barrier-00-01", "barrier-10-11"}));
 }
 
+// (c) with --ranking 6, by hand. Moves on the 3 x 3 grid (pick-up and put-down add 2);
+// c_H(pi) is the robot's own path (7 for G1, 8 for G2: the barriers are the human's only).
+// G1 = c12 is 3 moves away for the observers by c10-c11, c01-c11 or c01-c02; once all three
+// are closed the next is 5, the robot's (IE 1). G2 = c02 is 2 moves away by c01; else 4, by
+// a 3-move path to c12 or by c11-c01 while c01-c02 is open (IE e^2); else 6 (IE 1).
+// Closing G1's three paths with two barriers: {00-01, 10-11}, {00-01, 11-12} or
+// {01-02, 11-12}; of these, {00-01, 11-12} leaves c00-c10-c11-c01-c02 to G2.
+// f = 6.513215599, robot term 0.25 * 10 * 7.5 = 18.75:
+//   1, 2: {00-01, 10-11}, {01-02, 11-12}: f + 60 + 18.75 = 85.263215599 (spec order)
+//   3, 4: {00-01}, {01-02} (G2's 2-move path closed): f e^2 + 30 + 18.75 = 96.876515445
+//   5:    {00-01, 11-12}: f (1 + e^2) / 2 + 60 + 18.75 = 106.069865522
+//   6:    the first three barriers in spec order keeping IE 1 for both, {00-01, 01-02,
+//         10-11}: f + 90 + 18.75 = 115.263215599. It is rank 1 plus a barrier that no
+//         plan of rank 1 uses (its cone): the witness search never plans it.
+// Every other design is worse: one barrier elsewhere leaves G2 at e^4 (250.6), two
+// barriers with IE e^2 for both cost 126.877.
+TEST(Restaurant, RankingOfTheSixBestByHand) {
+    DesignProblem problem = load_design_problem(DIR + "c-two-tasks-t10.textproto");
+    const std::vector<std::pair<std::vector<std::string>, double>> expected = {
+        {{"barrier-00-01", "barrier-10-11"}, 85.263215599},
+        {{"barrier-01-02", "barrier-11-12"}, 85.263215599},
+        {{"barrier-00-01"}, 96.876515445},
+        {{"barrier-01-02"}, 96.876515445},
+        {{"barrier-00-01", "barrier-11-12"}, 106.069865522},
+        {{"barrier-00-01", "barrier-01-02", "barrier-10-11"}, 115.263215599}};
+    for (SearchMethod method : {SearchMethod::WITNESS, SearchMethod::EXHAUSTIVE}) {
+        for (bool hitting_sets : {true, false}) {
+            DesignSearchOptions options;
+            options.method = method;
+            options.hitting_sets = hitting_sets;
+            options.ranking = 6;
+            DesignResult r = run(problem, 1, options);
+            EXPECT_TRUE(r.optimal);
+            ASSERT_EQ(r.ranking.size(), expected.size());
+            for (std::size_t i = 0; i < expected.size(); ++i) {
+                EXPECT_EQ(design_names(problem, r.ranking[i].configuration), expected[i].first)
+                    << "rank " << i + 1;
+                EXPECT_NEAR(r.ranking[i].objective, expected[i].second, 1e-6) << "rank " << i + 1;
+            }
+            EXPECT_EQ(r.ranking[0].configuration, r.best->ranked.configuration);
+        }
+    }
+}
+
+// The robot that will not bend (COST_OPTIMAL) and its optimistic twin (issue 14). Serving
+// either booth, the robot has one optimal plan (pick-up, the moves by the gap, put-down), and
+// it is the most explicable plan too: the worst, the best and the explicable plan coincide,
+// so in every setting all three behaviours choose the same design at the same objective
+// (docs/behaviours.md). The spec file d- says COST_OPTIMAL itself.
+TEST(Restaurant, CostOptimalRobotsGetThePapersAnswersHere) {
+    for (const char *spec : {"a-one-task-t1", "b-two-tasks-t1", "c-two-tasks-t10"}) {
+        DesignProblem problem = load_design_problem(DIR + spec + ".textproto");
+        DesignResult explicable = run(problem);
+        for (auto behaviour :
+             {RobotBehaviour::COST_OPTIMAL, RobotBehaviour::COST_OPTIMAL_BEST_CASE}) {
+            SCOPED_TRACE(std::string(spec) + " " + std::to_string(int(behaviour)));
+            problem.weights.behaviour = behaviour;
+            DesignResult r = run(problem);
+            EXPECT_TRUE(r.optimal);
+            EXPECT_EQ(r.best->ranked.configuration, explicable.best->ranked.configuration);
+            EXPECT_NEAR(r.best->objective.value, explicable.best->objective.value, 1e-9);
+            EXPECT_NEAR(r.baseline->objective.value, explicable.baseline->objective.value, 1e-9);
+            for (std::size_t t = 0; t < r.best->tasks.size(); ++t)
+                EXPECT_EQ(r.best->tasks[t].plan, explicable.best->tasks[t].plan);
+        }
+    }
+    DesignProblem d = load_design_problem(DIR + "d-cost-optimal-t10.textproto");
+    EXPECT_EQ(d.weights.behaviour, RobotBehaviour::COST_OPTIMAL);
+    DesignResult r = run(d);
+    EXPECT_EQ(design_names(d, r.best->ranked.configuration),
+              (std::vector<std::string>{"barrier-00-01", "barrier-10-11"}));
+    EXPECT_NEAR(r.best->objective.value, 85.263215599, 1e-6);
+}
+
 } // namespace
 } // namespace envdesign::design

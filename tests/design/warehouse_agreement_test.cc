@@ -44,6 +44,42 @@ TEST_P(WarehouseAgreement, SameDesignAsEverySubset) {
     }
 }
 
+// The 5 best, the same from every search (docs/design-search.md "Ranking"). On this floor
+// (the smaller one, to keep ctest fast) the best closes the racks from the dock side (26.24);
+// second, the same from the other side (a tie); then the best plus one barrier that no plan
+// uses (27.24, three of them in spec order): members of the best's cone, which the witness
+// search never plans.
+TEST(WarehouseRanking, SameRankingAsEverySubset) {
+    DesignProblem problem = load_design_problem(std::string(ENVDESIGN_TEST_DATA) +
+                                                "/design/warehouse-10x3-s2/spec.textproto");
+    DesignSearchOptions exhaustive;
+    exhaustive.method = SearchMethod::EXHAUSTIVE;
+    exhaustive.ranking = 5;
+    LocalEvaluator every(problem, 1);
+    DesignResult want = search_design(problem, every, exhaustive);
+    ASSERT_TRUE(want.optimal);
+    ASSERT_EQ(want.ranking.size(), 5u);
+    EXPECT_NEAR(want.ranking[1].objective, want.ranking[0].objective, 1e-9);
+    for (std::size_t i = 2; i < 5; ++i) {
+        EXPECT_NEAR(want.ranking[i].objective, want.ranking[0].objective + 1, 1e-9);
+        EXPECT_EQ(want.ranking[i].configuration.size(), want.ranking[0].configuration.size() + 1);
+    }
+    for (bool hitting_sets : {false, true}) {
+        SCOPED_TRACE(hitting_sets ? "hitting-set phase" : "best-first search alone");
+        DesignSearchOptions witness;
+        witness.hitting_sets = hitting_sets;
+        witness.ranking = 5;
+        LocalEvaluator witnessed(problem, 1);
+        DesignResult got = search_design(problem, witnessed, witness);
+        ASSERT_TRUE(got.optimal);
+        ASSERT_EQ(got.ranking.size(), 5u);
+        for (std::size_t i = 0; i < 5; ++i) {
+            EXPECT_EQ(got.ranking[i].configuration, want.ranking[i].configuration) << i + 1;
+            EXPECT_NEAR(got.ranking[i].objective, want.ranking[i].objective, 1e-9) << i + 1;
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Floors, WarehouseAgreement,
                          ::testing::Values("warehouse-10x3-s2", "warehouse-12x10-s1"));
 

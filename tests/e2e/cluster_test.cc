@@ -14,6 +14,7 @@
 #include <envdesign/client/client.h>
 
 #include <atomic>
+#include <cmath>
 #include <random>
 
 namespace envdesign::e2e {
@@ -61,6 +62,25 @@ TEST(EndToEnd, CoordinatorAndTwoPlannersGiveTheSelfContainedResult) {
         EXPECT_EQ(counters.at("jobs_resent"), 0);
     }
     EXPECT_TRUE(cluster.coordinator().running());
+}
+
+// A robot that is not an explicable planner (issue 14): the spec's robot_behaviour travels
+// with it, the planners evaluate the worst optimal plan, the evaluations carry the optimal
+// actions, and the answer is the self-contained one: take the hop away ({no-hop}, objective
+// 0.9 * 1 + 0.1 * 1 + 5 = 6; an explicable robot would choose nothing; the spec's comment).
+TEST(EndToEnd, CostOptimalSpecGivesTheSelfContainedResult) {
+    const char *spec = "tests/e2e/data/cost-optimal/two-ways.textproto";
+    LocalCluster cluster(2);
+    for (const std::string search : {"witness", "exhaustive"}) {
+        client::Result result = design(cluster, spec, {}, search);
+        expect_self_contained(result, spec);
+        auto json = nlohmann::json::parse(result.json);
+        EXPECT_EQ(json.at("design"), nlohmann::json::array({"no-hop"})) << search;
+        EXPECT_NEAR(json.at("objective").get<double>(), 6.0, 1e-9) << search;
+        EXPECT_NEAR(json.at("baseline").at("objective").get<double>(),
+                    0.9 * std::exp(3.0) + 0.1 * 1.0, 1e-9)
+            << search;
+    }
 }
 
 TEST(EndToEnd, PlannerKilledMidRun) {

@@ -12,7 +12,12 @@
 
 #include <envdesign/client/client.h>
 
+#include <arpa/inet.h>
+#include <cstring>
 #include <fstream>
+#include <iostream>
+#include <netinet/in.h>
+#include <sys/socket.h>
 
 namespace envdesign::e2e {
 namespace {
@@ -124,6 +129,122 @@ TEST(Hostile, NegativeStringLengthIsMalformedNotACrash) {
     bus.handle(std::chrono::milliseconds(500));
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
+    EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
+}
+
+// LCM's own fragment reassembly (LCM 1.3.1's udpm transport, below the bus): the first
+// fragment of a message names its total size, and LCM sets aside a buffer of that size per
+// sender. Forged messages from 300 senders that never complete, each claiming 1.5 MB and
+// filling 600 KB of it, would hold 180 MB if nothing bounded the buffers; LCM's store keeps
+// at most 16 MiB of claimed buffers (least recently updated dropped first), and a claim of
+// 200 MB (below LCM's 256 MiB limit) only reserves address space, so the services stay
+// small and keep working.
+class FragmentForger {
+public:
+    explicit FragmentForger(const std::string &url) {
+        // udpm://GROUP:PORT?...
+        auto host = url.find("//") + 2, colon = url.find(':', host);
+        group_.sin_family = AF_INET;
+        group_.sin_port = htons(static_cast<std::uint16_t>(std::stoi(url.substr(colon + 1))));
+        inet_pton(AF_INET, url.substr(host, colon - host).c_str(), &group_.sin_addr);
+    }
+    // One sender (its own socket, so its own source port): the first fragment of a
+    // `claimed`-byte message on `channel`, then `more` fragments of `size` bytes spread over it.
+    void send_message(const std::string &channel, std::uint32_t claimed, int more,
+                      std::size_t size) {
+        int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+        unsigned char ttl = 0;
+        ::setsockopt(fd, IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl);
+        std::uint16_t fragments = static_cast<std::uint16_t>(claimed / size + 1);
+        send(fd, fragment(0, fragments, claimed, 0, channel + std::string(1, '\0') + "x"));
+        // The rest carry the same sequence number: LCM drops a buffer at a new one.
+        for (int i = 1; i <= more; ++i) {
+            auto no = static_cast<std::uint16_t>(i * (fragments - 2) / more); // all inside
+            send(fd, fragment(no, fragments, claimed, static_cast<std::uint32_t>(no * size),
+                              std::string(size, 'y'), false));
+        }
+        ::close(fd);
+    }
+
+    // A real fragmented message: `payload` in fragments of `size` bytes.
+    void send_complete(const std::string &channel, const std::string &payload, std::size_t size) {
+        int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+        unsigned char ttl = 0;
+        ::setsockopt(fd, IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl);
+        auto of = static_cast<std::uint16_t>((payload.size() + size - 1) / size);
+        auto total = static_cast<std::uint32_t>(payload.size());
+        ++seqno_;
+        for (std::uint16_t no = 0; no < of; ++no) {
+            std::string part = payload.substr(no * size, size);
+            if (no == 0)
+                part = channel + std::string(1, '\0') + part;
+            send(fd, fragment(no, of, total, static_cast<std::uint32_t>(no * size), part, false));
+        }
+        ::close(fd);
+    }
+
+private:
+    std::string fragment(std::uint16_t no, std::uint16_t of, std::uint32_t size,
+                         std::uint32_t offset, const std::string &payload, bool next = true) {
+        std::string d(20, '\0');
+        auto put32 = [&](int at, std::uint32_t v) {
+            v = htonl(v);
+            std::memcpy(d.data() + at, &v, 4);
+        };
+        auto put16 = [&](int at, std::uint16_t v) {
+            v = htons(v);
+            std::memcpy(d.data() + at, &v, 2);
+        };
+        put32(0, 0x4c433033); // "LC03": a fragment
+        put32(4, next ? ++seqno_ : seqno_);
+        put32(8, size);
+        put32(12, offset);
+        put16(16, no);
+        put16(18, of);
+        return d + payload;
+    }
+    void send(int fd, const std::string &datagram) {
+        ::sendto(fd, datagram.data(), datagram.size(), 0, reinterpret_cast<sockaddr *>(&group_),
+                 sizeof group_);
+        std::this_thread::sleep_for(std::chrono::microseconds(300)); // within the socket buffer
+    }
+    sockaddr_in group_{};
+    std::uint32_t seqno_ = 1000;
+};
+
+TEST(Hostile, ForgedLcmFragmentsClaimingHugeMessagesLeaveTheServicesSmall) {
+    LocalCluster cluster(1);
+    pid_t planner = cluster.planner(0).pid(), coordinator = cluster.coordinator().pid();
+    long planner_before = resident_kib(planner), coordinator_before = resident_kib(coordinator);
+    ASSERT_GT(planner_before, 0);
+    FragmentForger forger(cluster.url());
+    // The framing is LCM's: a real fragmented message in the same form is delivered whole.
+    bus::Bus listener(cluster.url(),
+                      std::make_shared<spdlog::logger>(
+                          "listener", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    std::string heard;
+    auto sub = listener.subscribe_raw("FORGER_CHECK", [&](const void *data, int size) {
+        heard.assign(static_cast<const char *>(data), static_cast<std::size_t>(size));
+    });
+    std::string payload(150'000, 'p');
+    payload[149'999] = 'q';
+    forger.send_complete("FORGER_CHECK", payload, 60'000);
+    for (int i = 0; i < 50 && heard.empty(); ++i)
+        listener.handle(std::chrono::milliseconds(20));
+    ASSERT_EQ(heard, payload);
+    for (int sender = 0; sender < 300; ++sender)
+        forger.send_message(sender % 2 ? bus::SPEC : bus::REQUEST,
+                            sender % 10 ? 1'500'000 : 200u << 20, 10, 60'000);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    long planner_after = resident_kib(planner), coordinator_after = resident_kib(coordinator);
+    std::cerr << "resident KiB, planner " << planner_before << " -> " << planner_after
+              << ", coordinator " << coordinator_before << " -> " << coordinator_after << "\n";
+    EXPECT_LT(planner_after - planner_before, 64 * 1024)
+        << "planner grew from " << planner_before << " to " << planner_after << " KiB";
+    EXPECT_LT(coordinator_after - coordinator_before, 64 * 1024)
+        << "coordinator grew from " << coordinator_before << " to " << coordinator_after << " KiB";
+    EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
 }
 

@@ -23,6 +23,23 @@ SAME = ("status", "design", "objective", "terms", "baseline", "tasks",
         "limit_reached")
 
 
+def installer_python():
+    """A Python with setuptools, wheel and venv (Debian's python3-setuptools, python3-wheel,
+    python3-venv; deploy/install-deps.sh): what `pip install --no-build-isolation` needs."""
+    check = "import setuptools, wheel, venv"
+    for python in ("/usr/bin/python3", sys.executable):
+        if os.path.exists(python) and subprocess.run([python, "-c", check]).returncode == 0:
+            return python
+    raise AssertionError("no Python with setuptools and wheel: run deploy/install-deps.sh")
+
+
+def readme_example():
+    """The ```python block of clients/python/README.md, as written."""
+    with open(os.path.join(ROOT, "clients", "python", "README.md")) as f:
+        text = f.read()
+    return text.split("```python\n", 1)[1].split("```", 1)[0]
+
+
 def self_contained(spec):
     out = subprocess.run([os.path.join(BUILD, "bin", "envdesign"), "design", spec, "--json"],
                          check=True, capture_output=True, text=True).stdout
@@ -45,7 +62,7 @@ class PythonClient(unittest.TestCase):
         shutil.rmtree(cls.work, ignore_errors=True)
 
     def check(self, spec):
-        result, code = envdesign_client.design(spec, URL, give_up_after_s=10)
+        result, code = envdesign_client.design_result(spec, URL, give_up_after_s=10)
         self.assertEqual(code, 0)
         want = self_contained(spec)
         for key in SAME:
@@ -108,7 +125,7 @@ class PythonClientWithKey(unittest.TestCase):
 
     def test_signed_request_gets_the_self_contained_result(self):
         spec = os.path.join(ROOT, "examples", "restaurant", "c-two-tasks-t10.textproto")
-        result, code = envdesign_client.design(spec, self.url, give_up_after_s=10,
+        result, code = envdesign_client.design_result(spec, self.url, give_up_after_s=10,
                                                key_file=self.key)
         self.assertEqual(code, 0)
         want = self_contained(spec)
@@ -132,6 +149,58 @@ class PythonClientWithKey(unittest.TestCase):
         with self.assertRaises(envdesign_auth.KeyFileError) as caught:
             envdesign_auth.load_key_file(loose)
         self.assertIn("accessible by group or others", str(caught.exception))
+
+
+class InstalledPackage(unittest.TestCase):
+    """The package as a user installs it, against a cluster of its own."""
+    url = f"udpm://239.255.76.67:{62000 + os.getpid() % 2000}?ttl=0"  # apart from the others
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp()
+        cls.cluster = ["bash", os.path.join(ROOT, "deploy", "cluster.sh")]
+        cls.env = dict(os.environ, ENVDESIGN_BIN=os.path.join(BUILD, "bin"))
+        subprocess.run(cls.cluster + ["start", "--planners", "1", "--lcm-url", cls.url, "--dir",
+                                      os.path.join(cls.work, "cluster")], check=True, env=cls.env)
+
+    @classmethod
+    def tearDownClass(cls):
+        subprocess.run(cls.cluster + ["stop", "--dir", os.path.join(cls.work, "cluster")],
+                       env=cls.env)
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def test_installed_package_runs_the_readme_example(self):
+        """pip installs clients/python offline into a fresh venv (types included); the README's
+        example and the envdesign-client command work there, and a bad URL is one line, exit 2."""
+        python = installer_python()
+        venv = os.path.join(self.work, "venv")
+        subprocess.run([python, "-m", "venv", "--system-site-packages", venv], check=True)
+        pip = subprocess.run([os.path.join(venv, "bin", "pip"), "install", "--no-build-isolation",
+                              "--no-index", os.path.join(ROOT, "clients", "python")],
+                             capture_output=True, text=True)
+        self.assertEqual(pip.returncode, 0, pip.stdout + pip.stderr)
+        clean = dict(os.environ)
+        clean.pop("ENVDESIGN_PYTHON_TYPES", None)  # the installed types, not the build's
+        spec = os.path.join(ROOT, "examples", "restaurant", "c-two-tasks-t10.textproto")
+        want = self_contained(spec)
+        example = readme_example().replace("udpm://239.255.76.67:7667?ttl=0", self.url)
+        run = subprocess.run([os.path.join(venv, "bin", "python"), "-c", example], cwd=ROOT,
+                             env=clean, capture_output=True, text=True, timeout=60)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        # The restaurant (c): the two barriers, 6.513 + 60 + 18.75 (docs/concepts.md).
+        self.assertEqual(run.stdout, f"optimal {want['design']} {want['objective']}\n")
+        self.assertEqual(want["design"], ["barrier-00-01", "barrier-10-11"])
+        self.assertAlmostEqual(want["objective"], 85.263, places=3)
+        command = os.path.join(venv, "bin", "envdesign-client")
+        run = subprocess.run([command, spec, "--connect", self.url, "--json"], env=clean,
+                             capture_output=True, text=True, timeout=60)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertEqual(json.loads(run.stdout)["objective"], want["objective"])
+        run = subprocess.run([command, spec, "--connect", "udpm://10.1.2.3:7667"], env=clean,
+                             capture_output=True, text=True, timeout=60)
+        self.assertEqual(run.returncode, 2)
+        self.assertEqual(run.stderr, "envdesign-client: bad LCM URL 'udpm://10.1.2.3:7667': "
+                         "10.1.2.3 is not a multicast address (224.0.0.0 to 239.255.255.255)\n")
 
 
 class Trailer(unittest.TestCase):

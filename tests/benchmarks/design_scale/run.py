@@ -3,7 +3,7 @@
 
   python3 tests/benchmarks/design_scale/run.py [--runs 3] [--time-limit 120]
       [--sizes warehouse:64x10,rules:8x3] [--exhaustive-max N] [--seed 1]
-      [--csv OUT.csv] [--markdown docs/results/design-scale.md] [--keep DIR]
+      [--csv OUT.csv] [--markdown docs/results/design-scale.md] [--keep DIR] [--ranking N]
 
 For each size KIND:N[xTASKS] it generates a problem with generate.py (N candidate
 modifications, TASKS tasks, default 10 for the warehouse and 3 for rules) and runs
@@ -13,7 +13,8 @@ modifications, TASKS tasks, default 10 for the warehouse and 3 for rules) and ru
 process (loading, grounding and search). Prints per problem: configurations evaluated
 (`configurations_evaluated`) and visited (`configurations_visited`, when the binary reports
 it), planner runs, seconds, status, the proven gap when a limit stopped it, the objective and
-the design's size; beside them the exhaustive search's figures, the time ratio exhaustive /
+the design's size (with --ranking N, the witness search lists the N best: `ranked` says how
+many it listed, `ranked_last` the last one's objective); beside them the exhaustive search's figures, the time ratio exhaustive /
 witness, and whether both chose the same design and objective.
 """
 import argparse
@@ -37,7 +38,7 @@ DEFAULT_SIZES = ",".join([f"warehouse:{n}x10" for n in (12, 16, 24, 32, 48, 64, 
 EXHAUSTIVE_MAX = {"warehouse": 18, "rules": 12}
 COLUMNS = ["kind", "n", "tasks", "evaluated", "visited", "planner_runs", "seconds", "status",
            "gap", "objective", "design_size", "exh_evaluated", "exh_planner_runs", "exh_seconds",
-           "exh_status", "ratio", "same_design", "same_objective"]
+           "exh_status", "ratio", "same_design", "same_objective", "ranked", "ranked_last"]
 
 
 def parse_size(text):
@@ -56,10 +57,12 @@ def generate(kind, mods, tasks, seed, out):
     return os.path.join(out, "spec.textproto")
 
 
-def design(binary, spec, search, time_limit):
+def design(binary, spec, search, time_limit, ranking=0):
     """One run: the JSON result with "wall" added, or {"status": "error N", ...}."""
     command = [binary, "--log-level", "warn", "design", spec, "--json", "--workers", "1",
                "--time-limit", str(time_limit), "--search", search]
+    if ranking:
+        command += ["--ranking", str(ranking)]
     start = time.perf_counter()
     proc = subprocess.run(command, capture_output=True, text=True)
     wall = time.perf_counter() - start
@@ -74,7 +77,8 @@ def design(binary, spec, search, time_limit):
 
 def repeated(binary, spec, search, args):
     """--runs runs; the first run's counters and design, the median wall time."""
-    results = [design(binary, spec, search, args.time_limit) for _ in range(args.runs)]
+    ranking = args.ranking if search == "witness" else 0
+    results = [design(binary, spec, search, args.time_limit, ranking) for _ in range(args.runs)]
     first = dict(results[0])
     first["wall"] = statistics.median(r["wall"] for r in results)
     statuses = sorted({r["status"] for r in results})
@@ -101,6 +105,9 @@ def row_of(kind, mods, tasks, witness, exhaustive):
            "objective": witness.get("objective", ""),
            "design_size": len(witness["design"]) if "design" in witness else "",
            "design": " ".join(witness.get("design", []))}
+    if witness.get("ranking"):
+        row.update({"ranked": len(witness["ranking"]),
+                    "ranked_last": witness["ranking"][-1]["objective"]})
     if exhaustive:
         both = "design" in witness and "design" in exhaustive
         row.update({"exh_evaluated": exhaustive.get("configurations_evaluated", ""),
@@ -173,6 +180,8 @@ def main():
     parser.add_argument("--keep", help="write the problems here instead of a temp dir")
     parser.add_argument("--csv")
     parser.add_argument("--markdown")
+    parser.add_argument("--ranking", type=int, default=0,
+                        help="the witness search lists the N best designs (--ranking N)")
     args = parser.parse_args()
     try:
         sizes = [parse_size(s) for s in args.sizes.split(",") if s.strip()]

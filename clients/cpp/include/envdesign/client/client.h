@@ -95,6 +95,29 @@ struct StatusReport {
 ENVDESIGN_CLIENT_API StatusReport listen_status(const std::string &lcm_url,
                                                 const StatusOptions &options = {});
 
+struct WatchOptions {
+    double seconds = 0;   // how long to watch; 0: until stop_requested says so
+    std::string key_file; // as Options::key_file
+    bool json = false;    // JSON lines (one object a message), else one text line a message
+    bool status = false;  // also the services' status (once a second each)
+    // Polled on the calling thread (every 50 ms); true: stop watching (e.g. after SIGINT).
+    std::function<bool()> stop_requested;
+};
+
+struct WatchReport {
+    int exit_code = 0; // 0 watched until the end, 2 a bad URL or key file, 1 LCM failed
+    std::string error;
+    long long messages = 0; // lines passed to on_line
+};
+
+// Watches `lcm_url` (empty: LCM's default URL) and calls `on_line` on the calling thread for
+// every design result (ENVDESIGN_RESULT), progress (ENVDESIGN_PROGRESS), task distribution
+// estimate (ENVDESIGN_TASK_DISTRIBUTION) and, with options.status, service status, as it
+// arrives: one text line (a result: its summary, several lines) or one JSON object with
+// "kind": "result" | "progress" | "distribution" | "status"; `envdesign watch`.
+ENVDESIGN_CLIENT_API WatchReport watch_bus(const std::string &lcm_url, const WatchOptions &options,
+                                           const std::function<void(const std::string &)> &on_line);
+
 // A progress callback that draws a live line on stderr when it is a terminal (nothing
 // otherwise), for Options::on_progress.
 ENVDESIGN_CLIENT_API std::function<void(const Progress &)> stderr_progress();

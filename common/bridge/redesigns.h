@@ -8,7 +8,7 @@
 //     the coordinator's ENVDESIGN_RESULT as the answer.
 // Either way the bridge hears back through `Answered` (from any thread).
 
-#include "messages.h"
+#include "bridge/messages.h"
 
 #include "arrivals/redesign.h"
 #include "bus/bus.h"

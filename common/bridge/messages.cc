@@ -1,4 +1,4 @@
-#include "messages.h"
+#include "bridge/messages.h"
 
 #include <set>
 

@@ -3,6 +3,7 @@
 // design_result_t was made for.
 
 #include "arrivals/tracker.h"
+#include "bus/channels.h"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/task_distribution_t.hpp"
 
@@ -10,10 +11,6 @@
 #include <vector>
 
 namespace envdesign::bridge {
-
-// ENVDESIGN_TASK_DISTRIBUTION: estimates; ENVDESIGN_REEVALUATE: requests (same type).
-inline constexpr const char *TASK_DISTRIBUTION = "ENVDESIGN_TASK_DISTRIBUTION";
-inline constexpr const char *REEVALUATE = "ENVDESIGN_REEVALUATE";
 
 // The design in force for a problem, as the bridge last heard it.
 struct DesignInForce {

@@ -1,4 +1,4 @@
-#include "spec_request.h"
+#include "bridge/spec_request.h"
 
 #include "design/spec_reader.h"
 #include "pddl/input_file.h"

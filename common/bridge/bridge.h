@@ -1,8 +1,11 @@
 #pragma once
-// Overview: envdesign-bridge's core (main.cc is its thin main; README.md the user's view).
+// Overview: envdesign-bridge's core (services/bridge/main.cc is its thin main, README.md
+// there the user's view). It is handed its transport (a Bus), its arrivals (an
+// ArrivalSource: DDS in deployment, an ArrivalQueue in tests) and its clock (clock.h), so
+// tests run it in-process over memq:// with scripted arrivals and a hand-set time.
 //
-//   DDS TaskArrival --(reader thread)--> ArrivalTracker (common/arrivals: checks, estimate of
-//   D per design problem, drift detector)
+//   ArrivalSource --(reader thread, or pump())--> ArrivalTracker (common/arrivals: checks, estimate
+//   of D per design problem, drift detector)
 //     --> ENVDESIGN_TASK_DISTRIBUTION: each problem's estimate (lcm-spy shows it)
 //     --> on drift or a new task: ENVDESIGN_REEVALUATE (the request, same type) and a
 //         re-evaluation by a RedesignBackend (redesigns.h): in this process, or by
@@ -13,21 +16,24 @@
 //   also re-weighed over the stored evaluations (no planner); when that proves another
 //   design optimal it is published at once, so the drift threshold only gates planning.
 //
-// Threads: the DDS reader thread takes samples and feeds the tracker; the bus thread (the
-// one calling bus.handle() and tick()) takes results; the local backend has its own worker.
-// One mutex guards the tracker; LCM publishing is thread-safe (bus.h). Bad samples are
-// counted and logged through a LogThrottle; nothing a sample holds can throw out of the
-// reader thread.
+// Threads: the reader thread (config.reader_thread; else the caller's pump()) takes samples and
+// feeds the tracker; the bus thread (the one calling bus.handle() and tick()) takes results; the
+// local backend has its own worker. One mutex guards the tracker; LCM publishing is thread-safe
+// (bus.h). Bad samples are counted and logged through a LogThrottle; nothing a sample holds can
+// throw out of the reader thread.
 //
-//   Bridge bridge(bus, config);                  // loads specs, joins DDS, asks for designs
+//   dds::ArrivalReader reader(domain);
+//   SystemClock clock;
+//   Bridge bridge(bus, config, reader, clock);   // loads specs, asks for the first designs
 //   while (running) { bus.handle(20ms); bridge.tick(); }
 
-#include "messages.h"
-#include "redesigns.h"
+#include "bridge/clock.h"
+#include "bridge/messages.h"
+#include "bridge/redesigns.h"
 
+#include "arrivals/arrival_source.h"
 #include "arrivals/tracker.h"
 #include "bus/bus.h"
-#include "dds/arrival_topic.h"
 
 #include <atomic>
 #include <chrono>
@@ -53,11 +59,10 @@ struct BridgeConfig {
     std::vector<ProblemSource> problems;
     arrivals::TrackerConfig tracker;
     Mode mode = Mode::LOCAL;
-    int domain = 0;                           // DDS domain id
-    int reader_history = dds::READER_HISTORY; // per (problem, site)
-    double publish_hz = 10;                   // estimates per problem per second, at most
-    arrivals::RedesignOptions local;          // Mode::LOCAL
-    CoordinatorRequestOptions coordinator;    // Mode::COORDINATOR
+    double publish_hz = 10;                // estimates per problem per second, at most
+    bool reader_thread = true;             // false: the caller takes arrivals with pump()
+    arrivals::RedesignOptions local;       // Mode::LOCAL
+    CoordinatorRequestOptions coordinator; // Mode::COORDINATOR
 };
 
 struct BridgeStats {
@@ -71,16 +76,22 @@ struct BridgeStats {
 
 class Bridge {
 public:
-    // Throws pddl::ParseError for a spec that does not load, dds::DdsError when DDS fails.
-    Bridge(bus::Bus &bus, BridgeConfig config);
+    // Throws pddl::ParseError for a spec that does not load. `bus`, `source` and `clock`
+    // must outlive the bridge.
+    Bridge(bus::Bus &bus, BridgeConfig config, arrivals::ArrivalSource &source, const Clock &clock);
     ~Bridge(); // stops the reader thread and the backend
 
+    // Waits up to `wait_s` for arrivals and takes what is there; returns how many. Only
+    // without config.reader_thread (it would race the thread).
+    std::size_t pump(double wait_s);
     void tick(); // bus thread: estimates of problems whose arrivals paused
     BridgeStats stats() const;
+    // The design in force for `problem_id`, as last published (throws for an unknown id).
+    DesignInForce design(const std::string &problem_id) const;
 
 private:
     void read_arrivals(); // the reader thread
-    void take_batch(std::vector<arrivals::Arrival> &batch);
+    std::size_t take_batch(std::vector<arrivals::Arrival> &batch);
     // The rest run with mutex_ held.
     void receive(const arrivals::Arrival &arrival, double now, std::int64_t now_utime);
     void log_rejected(const arrivals::Arrival &arrival, const arrivals::Outcome &outcome,
@@ -94,7 +105,8 @@ private:
 
     bus::Bus &bus_;
     BridgeConfig config_;
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+    arrivals::ArrivalSource &source_;
+    const Clock &clock_;
     mutable std::mutex mutex_;
     arrivals::ArrivalTracker tracker_;
     arrivals::LogThrottle throttle_;
@@ -113,7 +125,6 @@ private:
     LocalRedesigns *local_ = nullptr;          // backend_ in Mode::LOCAL: it can re-weigh
     std::optional<bus::Subscription> results_; // optional: bus.h's default constructor
                                                // needs a type only bus.cc sees
-    std::unique_ptr<dds::ArrivalReader> reader_;
     std::atomic<bool> stopping_{false};
     std::thread reader_thread_; // last: starts once everything else exists
 };

@@ -1,6 +1,6 @@
-#include "bridge.h"
+#include "bridge/bridge.h"
 
-#include "spec_request.h"
+#include "bridge/spec_request.h"
 
 #include "bus/channels.h"
 #include "bus/log.h"
@@ -42,8 +42,10 @@ arrivals::TrackerConfig with_reweighing(const BridgeConfig &config) {
 
 } // namespace
 
-Bridge::Bridge(bus::Bus &bus, BridgeConfig config)
-    : bus_(bus), config_(std::move(config)), tracker_(with_reweighing(config_)) {
+Bridge::Bridge(bus::Bus &bus, BridgeConfig config, arrivals::ArrivalSource &source,
+               const Clock &clock)
+    : bus_(bus), config_(std::move(config)), source_(source), clock_(clock),
+      tracker_(with_reweighing(config_)) {
     std::map<std::string, design::DesignProblem> problems;
     std::map<std::string, envdesign::spec_t> specs;
     for (const auto &source : config_.problems) {
@@ -66,13 +68,13 @@ Bridge::Bridge(bus::Bus &bus, BridgeConfig config)
                                                           answered);
     results_.emplace(bus_.subscribe<envdesign::design_result_t>(
         bus::RESULT, [this](const envdesign::design_result_t &r) { backend_->on_result(r); }));
-    reader_ = std::make_unique<dds::ArrivalReader>(config_.domain, config_.reader_history);
     {
         std::lock_guard lock(mutex_);
         for (const auto &source : config_.problems)
             send(tracker_.initial_request(source.id, now()));
     }
-    reader_thread_ = std::thread([this] { read_arrivals(); });
+    if (config_.reader_thread)
+        reader_thread_ = std::thread([this] { read_arrivals(); });
 }
 
 Bridge::~Bridge() {
@@ -80,40 +82,45 @@ Bridge::~Bridge() {
         std::lock_guard lock(mutex_); // an answer being handled finishes first
         stopping_ = true;
     }
-    reader_->wake();
-    reader_thread_.join();
+    source_.wake();
+    if (reader_thread_.joinable())
+        reader_thread_.join();
     backend_.reset(); // joins the local worker; its last answer sees stopping_
 }
 
-double Bridge::now() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-}
+double Bridge::now() const { return clock_.seconds(); }
 
 void Bridge::read_arrivals() {
     std::vector<arrivals::Arrival> batch;
     while (!stopping_) {
         try {
-            if (reader_->wait(WAIT_S))
+            if (source_.wait(WAIT_S))
                 take_batch(batch);
-        } catch (const std::exception &e) { // DDS failed: say so, try again later
+        } catch (const std::exception &e) { // the source (DDS) failed: say so, try again later
             bus_.log().error("request - | reading arrivals: {}", e.what());
             std::this_thread::sleep_for(std::chrono::seconds(1));
         }
     }
 }
 
-void Bridge::take_batch(std::vector<arrivals::Arrival> &batch) {
+std::size_t Bridge::pump(double wait_s) {
+    std::vector<arrivals::Arrival> batch;
+    return source_.wait(wait_s) ? take_batch(batch) : 0;
+}
+
+std::size_t Bridge::take_batch(std::vector<arrivals::Arrival> &batch) {
     batch.clear();
-    reader_->take(batch, BATCH);
+    source_.take(batch, BATCH);
     bus_.log().trace("request - | took {} arrivals", batch.size());
     std::lock_guard lock(mutex_);
     double t = now();
-    std::int64_t utime = bus::now_utime();
+    std::int64_t utime = clock_.utime();
     for (const auto &arrival : batch)
         receive(arrival, t, utime);
     reweigh(t);
     for (const auto &[id, published] : problems_)
         publish_estimate(id, t, false);
+    return batch.size();
 }
 
 void Bridge::receive(const arrivals::Arrival &arrival, double t, std::int64_t utime) {
@@ -165,10 +172,10 @@ void Bridge::send(const arrivals::Request &request) {
     auto status = tracker_.status(request.problem_id);
     envdesign::task_distribution_t m =
         request_message(request, *status, tracker_.counters(), config_.tracker, p.design);
-    m.utime = bus::now_utime();
+    m.utime = clock_.utime();
     m.request_id = id;
     m.sender = config_.instance;
-    bus_.publish(REEVALUATE, m);
+    bus_.publish(bus::REEVALUATE, m);
     bus_.log().info("request {} | {}: re-evaluate, {}", bus::request_name(config_.instance, id),
                     request.problem_id, arrivals::describe(request));
     backend_->start(id, request);
@@ -184,9 +191,9 @@ void Bridge::publish_estimate(const std::string &id, double t, bool force) {
         return;
     envdesign::task_distribution_t m =
         distribution_message(*status, tracker_.counters(), config_.tracker, p.design);
-    m.utime = bus::now_utime();
+    m.utime = clock_.utime();
     m.sender = config_.instance;
-    bus_.publish(TASK_DISTRIBUTION, m);
+    bus_.publish(bus::TASK_DISTRIBUTION, m);
     p.at = t;
     p.estimated = status->estimated;
 }
@@ -251,6 +258,11 @@ void Bridge::tick() {
     for (const auto &[verdict, count] : throttle_.overdue(t))
         bus_.log().warn("request - | {} more bad arrivals ({}) not logged", count,
                         arrivals::to_string(verdict));
+}
+
+DesignInForce Bridge::design(const std::string &problem_id) const {
+    std::lock_guard lock(mutex_);
+    return problems_.at(problem_id).design;
 }
 
 BridgeStats Bridge::stats() const {

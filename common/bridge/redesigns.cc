@@ -1,6 +1,6 @@
-#include "redesigns.h"
+#include "bridge/redesigns.h"
 
-#include "spec_request.h"
+#include "bridge/spec_request.h"
 
 #include "bus/channels.h"
 #include "bus/log.h"

@@ -1,0 +1,33 @@
+#pragma once
+// The warnings of `envdesign design`: on stderr as "warning: ..." lines and in the JSON
+// result as "warnings": [...]. A spec the reader accepted but may not mean (probabilities not
+// summing to 1), and tasks that are unsolvable in the unmodified models, each with the reason
+// (so that `objective: inf` comes with a word why).
+
+#include "design/deadline.h"
+#include "design/design_search.h"
+#include "design/plan_cache.h"
+
+#include <string>
+#include <vector>
+
+namespace envdesign::cli {
+
+// One line per task of result.baseline with infinite IE, naming it and why; plans P_R (and
+// P_H when not known) through `planner` until `deadline`.
+std::vector<std::string> unsolvable_task_warnings(const design::DesignProblem &problem,
+                                                  const design::DesignResult &result,
+                                                  design::PlanCache &planner,
+                                                  const design::Deadline &deadline);
+
+// With --connect: the warnings of the spec file read here (the coordinator reads it again
+// and reports bad input; a spec that does not read gives none here).
+std::vector<std::string> remote_spec_warnings(const std::string &spec_path);
+
+// `json_text` (a JSON result object) with "warnings": `warnings` when there are any.
+std::string with_warnings(const std::string &json_text, const std::vector<std::string> &warnings);
+
+// Prints each on stderr, prefixed "warning: " unless it already names its place.
+void print_warnings(const std::vector<std::string> &warnings);
+
+} // namespace envdesign::cli

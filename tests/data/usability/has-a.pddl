@@ -1,0 +1,1 @@
+(define (problem has-a) (:domain two-ways) (:init (a)) (:goal (g)))

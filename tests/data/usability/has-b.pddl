@@ -1,0 +1,1 @@
+(define (problem has-b) (:domain two-ways) (:init (b)) (:goal (g)))

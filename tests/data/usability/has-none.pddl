@@ -1,0 +1,1 @@
+(define (problem has-none) (:domain two-ways) (:init) (:goal (g)))

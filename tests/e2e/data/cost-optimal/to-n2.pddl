@@ -1,0 +1,5 @@
+(define (problem to-n2) (:domain two-ways)
+  (:objects n0 n1 n2 - node)
+  (:init (at n0) (conn n0 n1) (conn n1 n2) (far n0 n2) (= (total-cost) 0))
+  (:goal (at n2))
+  (:metric minimize (total-cost)))

@@ -1,0 +1,140 @@
+// The services under systemd (issue 11): --config FILE (keys are the flags' names, flags on
+// the command line win, a bad line exits 2 naming FILE:LINE:COL) and the notify protocol
+// (READY=1 once on the bus, WATCHDOG=1 from the loop, STOPPING=1), with real processes and
+// a notify socket bound here as systemd would.
+
+#include "local_cluster.h"
+
+#include "../support/notify_socket.h"
+
+namespace envdesign::e2e {
+namespace {
+
+using namespace std::chrono_literals;
+using testing::NotifySocket;
+
+struct Outcome {
+    int code;
+    std::string output; // stdout and stderr
+};
+
+Outcome run(const std::string &command) {
+    int code = -1;
+    std::string out = command_output(command + " 2>&1", &code);
+    return {code, out};
+}
+
+class ServiceConfig : public ::testing::Test {
+protected:
+    std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                                ("envdesign-config-" + std::to_string(getpid()));
+    void SetUp() override { std::filesystem::create_directories(dir); }
+    void TearDown() override { std::filesystem::remove_all(dir); }
+    std::string write(const std::string &name, const std::string &text) {
+        std::string path = (dir / name).string();
+        std::ofstream(path) << text;
+        return path;
+    }
+    Outcome check(const std::string &service, const std::string &conf, const std::string &flags = "") {
+        return run(binary(service) + " --config " + conf + " " + flags + " --check-config");
+    }
+};
+
+TEST_F(ServiceConfig, AGoodFileIsAcceptedWithCommentsQuotesAndFlags) {
+    std::string conf = write("good.conf", "# the coordinator\n"
+                                          "\n"
+                                          "max-requests = 4   # searches at once\n"
+                                          "  lcm-url = \"udpm://239.255.76.67:7667?ttl=0\"\n"
+                                          "state-fsync = true\n"
+                                          "log-level=warn\n");
+    Outcome r = check("envdesign-coordinator", conf);
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_NE(r.output.find("configuration OK"), std::string::npos) << r.output;
+}
+
+TEST_F(ServiceConfig, AnUnknownKeyExitsTwoNamingFileAndLine) {
+    std::string conf = write("unknown.conf", "max-requests = 4\n\n  workers = 2\n");
+    Outcome r = check("envdesign-coordinator", conf); // --workers is the planner's
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find(conf + ":3:3: error: unknown setting 'workers'"), std::string::npos)
+        << r.output;
+    // The same key is the planner's own.
+    EXPECT_EQ(check("envdesign-planner", conf).code, 2); // max-requests is not
+    EXPECT_EQ(check("envdesign-planner", write("p.conf", "workers = 2\n")).code, 0);
+}
+
+TEST_F(ServiceConfig, ALineWithoutEqualsOrAnUnclosedQuoteExitsTwoNamingTheColumn) {
+    std::string missing = write("missing.conf", "max-requests 4\n");
+    Outcome r = check("envdesign-coordinator", missing);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find(missing + ":1:14: error: expected '=' after 'max-requests'"),
+              std::string::npos)
+        << r.output;
+    std::string quote = write("quote.conf", "log-level = warn\nname = \"coordinator/a\n");
+    r = check("envdesign-coordinator", quote);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find(quote + ":2:7: error: unterminated quote"), std::string::npos)
+        << r.output;
+    r = check("envdesign-coordinator", (dir / "absent.conf").string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find("absent.conf: error: cannot read the config file"), std::string::npos)
+        << r.output;
+}
+
+TEST_F(ServiceConfig, ValuesPassTheFlagsChecksAndTheCommandLineWins) {
+    std::string conf = write("range.conf", "max-requests = 0\n"); // the flag wants 1..1000
+    Outcome r = check("envdesign-coordinator", conf);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find("max-requests"), std::string::npos) << r.output;
+    // Given on the command line, the file's bad value is never used.
+    EXPECT_EQ(check("envdesign-coordinator", conf, "--max-requests 3").code, 0);
+    EXPECT_EQ(check("envdesign-coordinator", conf, "--max-requests=3").code, 0);
+    EXPECT_EQ(check("envdesign-coordinator", write("flag.conf", "state-fsync = maybe\n")).code, 2);
+}
+
+// READY=1 after the bus is up, then WATCHDOG=1 at half of WATCHDOG_USEC, STOPPING=1 on
+// SIGTERM: for the coordinator and for a planner.
+void expect_notify_protocol(const std::string &service, const std::filesystem::path &dir) {
+    NotifySocket socket((dir / (service + ".notify")).string());
+    std::vector<std::string> argv = {binary(service), "--lcm-url", unique_url(3), "--name",
+                                     service + "/notify"};
+    Process process(argv, socket.env(200'000), (dir / (service + ".log")).string());
+    auto ready = socket.next(10s);
+    ASSERT_TRUE(ready) << "no notification\n" << process.output();
+    EXPECT_NE(ready->find("READY=1"), std::string::npos) << *ready;
+    EXPECT_NE(ready->find("STATUS=on udpm://"), std::string::npos) << *ready;
+    // 100 ms apart: at least 5 in the next 1.2 s, and no fewer than the time allows.
+    auto start = std::chrono::steady_clock::now();
+    int watchdogs = 0;
+    while (std::chrono::steady_clock::now() - start < 1200ms) {
+        auto m = socket.next(300ms);
+        ASSERT_TRUE(m) << "the watchdog stopped after " << watchdogs << "\n" << process.output();
+        EXPECT_EQ(*m, "WATCHDOG=1");
+        ++watchdogs;
+    }
+    EXPECT_GE(watchdogs, 5);
+    EXPECT_LE(watchdogs, 14); // not a busy loop either
+    process.signal(SIGTERM);
+    EXPECT_TRUE(socket.until("STOPPING=1", 10s)) << process.output();
+    EXPECT_EQ(process.wait(), 0);
+}
+
+TEST_F(ServiceConfig, CoordinatorTellsSystemdReadyThenFeedsTheWatchdog) {
+    expect_notify_protocol("envdesign-coordinator", dir);
+}
+
+TEST_F(ServiceConfig, PlannerTellsSystemdReadyThenFeedsTheWatchdog) {
+    expect_notify_protocol("envdesign-planner", dir);
+}
+
+TEST_F(ServiceConfig, WithoutNotifySocketTheServiceRunsAsBefore) {
+    Process process({binary("envdesign-planner"), "--lcm-url", unique_url(3), "--name", "p"},
+                    {"WATCHDOG_USEC=100000"}, (dir / "plain.log").string());
+    std::this_thread::sleep_for(500ms);
+    EXPECT_TRUE(process.running()) << process.output();
+    process.signal(SIGTERM);
+    EXPECT_EQ(process.wait(), 0) << process.output();
+}
+
+} // namespace
+} // namespace envdesign::e2e
