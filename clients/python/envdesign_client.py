@@ -304,27 +304,40 @@ def number(value):
     return int(value) if value == math.floor(value) and abs(value) < 1e15 else value
 
 
-def objective_json(t):
-    return {"objective": number(t.objective),
-            "terms": {"inexplicability": number(t.inexplicability),
-                      "design_cost": number(t.design_cost), "robot_cost": number(t.robot_cost)}}
+def objective_json(t, explaining=False):
+    out = {"objective": number(t.objective),
+           "terms": {"inexplicability": number(t.inexplicability),
+                     "design_cost": number(t.design_cost), "robot_cost": number(t.robot_cost)}}
+    if explaining:  # robot_behaviour EXPLAINING (docs/behaviours-explaining.md)
+        out["terms"]["explanation"] = number(t.explanation)
+    return out
+
+
+def task_json(t):
+    out = {"name": t.name, "probability": t.probability, "ie": number(t.ie),
+           "robot_cost": number(t.robot_cost), "human_plan_cost": number(t.human_plan_cost),
+           "human_optimal_cost": number(t.human_optimal_cost)
+           if t.has_human_optimal_cost else None,
+           "plan": list(t.plan)}
+    if t.has_explanation:  # the option taken and the explanation
+        out["option"] = "explain" if t.explained else "act_explicably"
+        out["explanation"] = list(t.explanation.differences) if t.explanation.found else None
+        out["explicable_ie"] = number(t.explicable_ie)
+        out["robot_optimal_cost"] = number(t.explanation.robot_optimal_cost)
+    return out
 
 
 def result_json(r):
     """SPEC.md's JSON of a design_result_t (the keys the C++ client writes)."""
     out = {"status": r.status}
+    explaining = any(t.has_explanation for t in r.tasks)
     if r.has_design:
         out["design"] = list(r.design)
-        out.update(objective_json(r.best))
-        out["tasks"] = [{"name": t.name, "probability": t.probability, "ie": number(t.ie),
-                         "robot_cost": number(t.robot_cost),
-                         "human_plan_cost": number(t.human_plan_cost),
-                         "human_optimal_cost": number(t.human_optimal_cost)
-                         if t.has_human_optimal_cost else None,
-                         "plan": list(t.plan)} for t in r.tasks]
+        out.update(objective_json(r.best, explaining))
+        out["tasks"] = [task_json(t) for t in r.tasks]
     else:
         out.update({"design": None, "objective": None, "terms": None, "tasks": []})
-    out["baseline"] = objective_json(r.baseline) if r.has_baseline else None
+    out["baseline"] = objective_json(r.baseline, explaining) if r.has_baseline else None
     c = r.counters
     for key in ("configurations_evaluated", "planner_runs", "seconds", "configurations_total",
                 "configurations_abandoned", "configurations_skipped", "configurations_pruned",

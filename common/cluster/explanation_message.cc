@@ -1,5 +1,7 @@
 #include "cluster/explanation_message.h"
 
+#include "cluster/wire_explanation.h"
+
 namespace envdesign::cluster {
 namespace {
 
@@ -26,12 +28,12 @@ envdesign::break_even_t break_even_message(const design::DesignProblem &problem,
     return m;
 }
 
-envdesign::task_explanation_t task_explanation_message(const design::DesignTask &task,
+envdesign::task_explanation_t task_explanation_message(const design::DesignProblem &problem, int i,
                                                        const design::TaskComparison &t) {
     envdesign::task_explanation_t m{};
-    m.name = task.name;
+    m.name = problem.tasks[i].name;
     m.has_baseline = t.baseline.status != design::ExplicabilityStatus::LIMIT;
-    m.baseline = task_message(task, t.baseline);
+    m.baseline = task_message(problem, i, t.baseline);
     m.has_robot_plan = t.robot_plan.has_value();
     m.robot_plan = t.robot_plan.value_or(std::vector<std::string>{});
     m.robot_plan_length = length(m.robot_plan.size());
@@ -55,11 +57,13 @@ envdesign::design_terms_t terms_message(const design::Objective &objective) {
     t.inexplicability = objective.terms.inexplicability;
     t.design_cost = objective.terms.design_cost;
     t.robot_cost = objective.terms.robot_cost;
+    t.explanation = objective.terms.explanation;
     return t;
 }
 
-envdesign::task_result_t task_message(const design::DesignTask &task,
+envdesign::task_result_t task_message(const design::DesignProblem &problem, int i,
                                       const design::TaskExplicability &t) {
+    const design::DesignTask &task = problem.tasks[i];
     envdesign::task_result_t m;
     m.name = task.name;
     m.probability = task.probability;
@@ -70,6 +74,7 @@ envdesign::task_result_t task_message(const design::DesignTask &task,
     m.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
     m.plan = t.plan;
     m.plan_length = length(m.plan.size());
+    put_option(problem.weights, t, m); // EXPLAINING: the option the robot takes
     return m;
 }
 
@@ -99,7 +104,7 @@ envdesign::explanation_t explanation_message(const design::DesignProblem &proble
     m.least_inexplicability = e.least_inexplicability;
     m.chosen = point_message(problem, e.chosen);
     for (std::size_t i = 0; i < e.tasks.size() && i < problem.tasks.size(); ++i)
-        m.tasks.push_back(task_explanation_message(problem.tasks[i], e.tasks[i]));
+        m.tasks.push_back(task_explanation_message(problem, static_cast<int>(i), e.tasks[i]));
     m.num_tasks = length(m.tasks.size());
     for (const auto &v : e.marginal) {
         envdesign::marginal_value_t value{};

@@ -10,7 +10,8 @@
 namespace envdesign::cluster {
 
 envdesign::design_terms_t terms_message(const design::Objective &objective);
-envdesign::task_result_t task_message(const design::DesignTask &task,
+// Task `i` of `problem`; in EXPLAINING mode with the option the robot takes.
+envdesign::task_result_t task_message(const design::DesignProblem &problem, int i,
                                       const design::TaskExplicability &evaluation);
 // The point with its objective and terms at the problem's weights.
 envdesign::design_point_t point_message(const design::DesignProblem &problem,

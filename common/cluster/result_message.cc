@@ -74,7 +74,7 @@ envdesign::design_result_t result_message(const design::DesignProblem &problem,
         m.design_size = static_cast<std::int16_t>(m.design.size());
         m.best = terms_message(result.best->objective);
         for (std::size_t i = 0; i < result.best->tasks.size(); ++i)
-            m.tasks.push_back(task_message(problem.tasks[i], result.best->tasks[i]));
+            m.tasks.push_back(task_message(problem, static_cast<int>(i), result.best->tasks[i]));
         m.num_tasks = static_cast<std::int16_t>(m.tasks.size());
     }
     m.has_baseline = result.baseline.has_value();

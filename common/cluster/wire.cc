@@ -1,6 +1,7 @@
 #include "cluster/wire.h"
 
 #include "bus/log.h"
+#include "cluster/wire_explanation.h"
 #include "design/objective.h"
 #include "envdesign/design_request_t.hpp"
 
@@ -93,6 +94,8 @@ std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t
     if (!valid_cost(e.ie) || !valid_cost(e.robot_cost) || !valid_cost(e.human_plan_cost) ||
         (e.has_human_optimal_cost && !valid_cost(e.human_optimal_cost)))
         return "a cost or IE is not a non-negative number";
+    if (e.has_explanation)
+        return model_explanation_problem(e.explanation);
     return std::nullopt;
 }
 
@@ -112,6 +115,8 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     if (t.human_plan)
         e.human_plan = *t.human_plan;
     e.human_plan_length = static_cast<std::int16_t>(e.human_plan.size());
+    e.has_explanation = t.explanation.has_value();
+    e.explanation = model_explanation_message(t.explanation.value_or(design::TaskExplanation{}));
     e.has_optimal_actions = t.optimal_actions.has_value();
     if (t.optimal_actions)
         e.optimal_actions = *t.optimal_actions;
@@ -146,6 +151,8 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
     t.plan = e.plan;
     if (e.has_human_plan)
         t.human_plan = e.human_plan;
+    if (e.has_explanation)
+        t.explanation = model_explanation_value(e.explanation);
     if (e.has_optimal_actions)
         t.optimal_actions = e.optimal_actions;
     return answer;

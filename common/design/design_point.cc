@@ -1,10 +1,28 @@
 #include "design/design_point.h"
 
+#include "design/explaining.h"
+
+#include <cmath>
+
 namespace envdesign::design {
 
 DesignPoint design_point(const DesignProblem &problem, const Configuration &configuration,
                          const std::vector<TaskExplicability> &tasks) {
-    DesignPoint point{configuration, design_cost(problem, configuration), 0, 0};
+    DesignPoint point{configuration, design_cost(problem, configuration), 0, 0, {}, {}};
+    if (problem.weights.behaviour == RobotBehaviour::EXPLAINING) {
+        for (std::size_t i = 0; i < tasks.size() && i < problem.tasks.size(); ++i) {
+            TaskExplicability t = tasks[i];
+            t.plan.clear();
+            t.human_plan.reset();
+            if (t.explanation)
+                t.explanation->robot_plan.clear();
+            point.probabilities.push_back(problem.tasks[i].probability);
+            point.explaining_tasks.push_back(std::move(t));
+        }
+        // Not a fixed point under other weights: the expectations are "not known" (NaN).
+        point.expected_ie = point.expected_robot_cost = std::nan("");
+        return point;
+    }
     for (std::size_t i = 0; i < tasks.size() && i < problem.tasks.size(); ++i) {
         double p = problem.tasks[i].probability;
         if (p <= 0)
@@ -20,7 +38,37 @@ DesignPoint design_point(const DesignProblem &problem, const Configuration &conf
     return point;
 }
 
+namespace {
+
+// EXPLAINING: as objective_of() does, the option each task takes under `w`.
+Objective explaining_objective_at(const ObjectiveWeights &w, const DesignPoint &point) {
+    Objective out;
+    out.terms.design_cost = point.design_cost;
+    double expected_ie = 0, expected_cost = 0, expected_explanation = 0;
+    for (std::size_t i = 0; i < point.explaining_tasks.size(); ++i) {
+        double p = point.probabilities[i];
+        if (p <= 0)
+            continue;
+        BehaviourChoice c = choose_behaviour(w, point.explaining_tasks[i]);
+        if (!c.finite)
+            return out; // infinite
+        expected_ie += p * c.ie;
+        expected_cost += p * c.robot_cost;
+        expected_explanation += p * c.explanation;
+    }
+    out.terms.inexplicability = expected_ie * discounted_horizon(w);
+    out.terms.robot_cost = w.horizon * expected_cost;
+    out.terms.explanation = expected_explanation * discounted_horizon(w);
+    out.value = w.alpha * out.terms.inexplicability + w.beta * out.terms.design_cost +
+                w.kappa * out.terms.robot_cost + out.terms.explanation;
+    return out;
+}
+
+} // namespace
+
 Objective objective_at(const ObjectiveWeights &w, const DesignPoint &point) {
+    if (!point.explaining_tasks.empty())
+        return explaining_objective_at(w, point);
     Objective out;
     out.terms.design_cost = point.design_cost;
     if (point.expected_ie == INF)

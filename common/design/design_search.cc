@@ -273,9 +273,18 @@ double ranking_limit(const DesignResult &result, const Ranking &ranking) {
 DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
                            const DesignSearchOptions &options,
                            const std::function<void(const SearchProgress &)> &progress) {
-    if (options.method == SearchMethod::WITNESS && !options.relevant)
+    // EXPLAINING: a task's value depends on every difference between its two models (the
+    // explanation), not only on its witness plans, so the witness argument does not hold;
+    // the exhaustive search (with its bounds, which do hold) stays exact.
+    bool explaining = problem.weights.behaviour == RobotBehaviour::EXPLAINING;
+    if (options.method == SearchMethod::WITNESS && !options.relevant && !explaining)
         return search_witness(problem, evaluator, options, progress);
-    return Search(problem, evaluator, options, progress).run();
+    DesignResult result = Search(problem, evaluator, options, progress).run();
+    if (options.method == SearchMethod::WITNESS && !options.relevant)
+        result.notes.push_back("robot_behaviour EXPLAINING: the witness search does not apply "
+                               "(explanations depend on every model difference); searched "
+                               "exhaustively");
+    return result;
 }
 
 } // namespace envdesign::design

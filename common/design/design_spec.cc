@@ -145,11 +145,6 @@ private:
         w.behaviour = behaviour_from_proto(m_.robot_behaviour());
         w.explanation_cost =
             weight(m_.has_explanation_cost(), m_.explanation_cost(), 1, "explanation_cost");
-        if (w.behaviour == RobotBehaviour::EXPLAINING)
-            fail("robot_behaviour",
-                 "robot_behaviour " +
-                     proto::DesignProblem::RobotBehaviour_Name(m_.robot_behaviour()) +
-                     " is not supported by this build yet");
         if (m_.max_design_size() < 0)
             fail("max_design_size", "max_design_size must be >= 0");
         problem_.max_design_size = m_.max_design_size();

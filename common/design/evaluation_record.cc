@@ -109,6 +109,12 @@ std::string encode_evaluation(const TaskExplicability &e) {
     w.texts(e.plan);
     w.byte(e.human_plan ? 1 : 0);
     w.texts(e.human_plan.value_or(std::vector<std::string>{}));
+    TaskExplanation x = e.explanation.value_or(TaskExplanation{});
+    w.byte(e.explanation ? 1 : 0);
+    w.byte(x.found ? 1 : 0);
+    w.real(x.robot_optimal_cost);
+    w.texts(x.robot_plan);
+    w.texts(x.differences);
     if (e.optimal_actions) { // COST_OPTIMAL modes only: records of the others stay as they were
         w.byte(1);
         w.texts(*e.optimal_actions);
@@ -137,6 +143,14 @@ std::optional<TaskExplicability> decode_evaluation(const std::string &bytes) {
     auto human_plan = r.texts();
     if (has_human_plan)
         e.human_plan = std::move(human_plan);
+    bool has_explanation = r.byte() == 1;
+    TaskExplanation x;
+    x.found = r.byte() == 1;
+    x.robot_optimal_cost = r.real();
+    x.robot_plan = r.texts();
+    x.differences = r.texts();
+    if (has_explanation)
+        e.explanation = std::move(x);
     if (!r.at_end()) { // optional, appended by COST_OPTIMAL modes
         if (r.byte() != 1)
             return std::nullopt;

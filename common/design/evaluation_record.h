@@ -15,7 +15,8 @@
 
 namespace envdesign::design {
 
-inline constexpr int RECORD_VERSION = 1;
+// 2: evaluations carry the EXPLAINING option (TaskExplanation).
+inline constexpr int RECORD_VERSION = 2;
 
 enum class RecordKind { EXPLICABILITY, ROBOT_BOUND };
 

@@ -107,7 +107,10 @@ Explanation explain(const DesignProblem &problem, const DesignResult &result, Ev
     for (const auto &r : result.ranking)
         if (auto point = log.find(r.configuration))
             out.ranking.push_back(*point);
-    out.break_even = break_even(problem.weights, out.chosen, log.points());
+    // EXPLAINING: each task's choice moves with T and alpha, so the crossings of break_even.h
+    // (linear in alpha and f_T) do not hold; none are computed (designs_compared 0).
+    if (problem.weights.behaviour != RobotBehaviour::EXPLAINING)
+        out.break_even = break_even(problem.weights, out.chosen, log.points());
     return out;
 }
 

@@ -2,6 +2,7 @@
 
 #include "design/cost_optimal.h"
 #include "design/dispatcher.h"
+#include "design/explaining.h"
 #include "design/explicability.h"
 
 #include <condition_variable>
@@ -87,7 +88,7 @@ TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configurati
     ModelPair models = configured_models(problem_, configuration, task);
     if (is_cost_optimal(problem_.weights.behaviour))
         return evaluate_cost_optimal(models, problem_.weights, cache_, deadline);
-    return evaluate_explicability(models, problem_.weights.distance, cache_, deadline);
+    return evaluate_task_behaviour(models, problem_.weights, cache_, deadline);
 }
 
 std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration, int task,

@@ -1,5 +1,7 @@
 #include "design/objective.h"
 
+#include "design/explaining.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,7 +11,8 @@ namespace {
 double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
 
 double combine(const ObjectiveWeights &w, const ObjectiveTerms &t) {
-    return w.alpha * t.inexplicability + w.beta * t.design_cost + w.kappa * t.robot_cost;
+    return w.alpha * t.inexplicability + w.beta * t.design_cost + w.kappa * t.robot_cost +
+           t.explanation;
 }
 
 } // namespace
@@ -27,19 +30,22 @@ Objective objective_of(const DesignProblem &problem, double design_cost,
         known.push_back(&t);
     Objective out;
     out.terms.design_cost = design_cost;
-    double expected_ie = 0, expected_cost = 0;
+    const ObjectiveWeights &w = problem.weights;
+    double expected_ie = 0, expected_cost = 0, expected_explanation = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
         double p = problem.tasks[i].probability;
         if (p <= 0)
             continue;
-        if (tasks[i].status != ExplicabilityStatus::SOLVED)
+        BehaviourChoice c = choose_behaviour(w, tasks[i]);
+        if (!c.finite)
             return out; // infinite
-        expected_ie += p * tasks[i].ie;
-        expected_cost += p * tasks[i].robot_cost;
+        expected_ie += p * c.ie;
+        expected_cost += p * c.robot_cost;
+        expected_explanation += p * c.explanation;
     }
-    const ObjectiveWeights &w = problem.weights;
     out.terms.inexplicability = expected_ie * discounted_horizon(w);
     out.terms.robot_cost = w.horizon * expected_cost;
+    out.terms.explanation = expected_explanation * discounted_horizon(w);
     out.value = combine(w, out.terms);
     return out;
 }
@@ -48,24 +54,27 @@ double objective_lower_bound(const DesignProblem &problem, double design_cost,
                              const std::vector<const TaskExplicability *> &known,
                              const std::vector<std::optional<double>> &robot_cost_bounds) {
     const ObjectiveWeights &w = problem.weights;
-    double expected_ie = 0, expected_cost = 0;
+    double expected_ie = 0, expected_cost = 0, expected_explanation = 0;
     for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
         double p = problem.tasks[i].probability;
         if (p <= 0)
             continue;
         const TaskExplicability *t = i < known.size() ? known[i] : nullptr;
-        if (t && t->status == ExplicabilityStatus::INEXPLICABLE)
+        bool settled = t && t->status != ExplicabilityStatus::LIMIT;
+        BehaviourChoice c = settled ? choose_behaviour(w, *t) : BehaviourChoice{};
+        if (settled && !c.finite)
             return INF;
-        bool solved = t && t->status == ExplicabilityStatus::SOLVED;
         double bound =
             i < robot_cost_bounds.size() && robot_cost_bounds[i] ? *robot_cost_bounds[i] : 0.0;
-        if (!solved && std::isinf(bound))
+        if (!settled && std::isinf(bound))
             return INF;
-        expected_ie += p * (solved ? t->ie : least_ie(w.distance));
-        expected_cost += p * (solved ? t->robot_cost : bound);
+        // An unknown task: least IE, no explanation, robot cost at least c_R* (both options).
+        expected_ie += p * (settled ? c.ie : least_ie(w.distance));
+        expected_cost += p * (settled ? c.robot_cost : bound);
+        expected_explanation += p * c.explanation;
     }
     ObjectiveTerms terms{expected_ie * discounted_horizon(w), design_cost,
-                         w.horizon * expected_cost};
+                         w.horizon * expected_cost, expected_explanation * discounted_horizon(w)};
     return combine(w, terms);
 }
 

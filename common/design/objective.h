@@ -6,8 +6,10 @@
 // the weights; tasks of probability 0 do not count.
 //
 // Ranking (ranks_before): lower objective, then fewer modifications, then lower C(xi), then
-// the earlier modifications in spec order. Objectives within a relative 1e-9 of each other
-// are equal, so that rounding in the sums cannot override the tie-breaking rules.
+// the earlier modifications in spec order.
+// robot_behaviour EXPLAINING: per task the cheaper of acting explicably and explaining counts
+// (explaining.h), and the objective adds terms.explanation. Objectives within a relative 1e-9 of
+// each other are equal, so that rounding in the sums cannot override the tie-breaking rules.
 
 #include "design/configuration.h"
 #include "design/explicability.h"
@@ -21,6 +23,7 @@ struct ObjectiveTerms {
     double inexplicability = INF; // f_T(E[IE])
     double design_cost = 0;       // C(xi)
     double robot_cost = INF;      // T * E[c_R(pi)]
+    double explanation = 0;       // EXPLAINING: f_T(E[x * |E|]) (explaining.h); weight 1
 };
 
 struct Objective {

@@ -22,6 +22,15 @@ enum class ExplicabilityStatus {
     LIMIT,        // the deadline passed first: nothing is known
 };
 
+// robot_behaviour EXPLAINING (explanation.h): the robot's own optimal plan pi_R and a minimal
+// set of model differences that, told to the observers, makes pi_R optimal in their model.
+struct TaskExplanation {
+    bool found = false;                   // false: no subset works (or P_R has no plan)
+    double robot_optimal_cost = INF;      // c_R*, the cost of pi_R; INF: P_R has no plan
+    std::vector<std::string> robot_plan;  // pi_R, the planner's optimal plan of P_R
+    std::vector<std::string> differences; // E, model_differences.h's text, smallest first
+};
+
 struct TaskExplicability {
     ExplicabilityStatus status = ExplicabilityStatus::LIMIT;
     double ie = INF;
@@ -32,6 +41,9 @@ struct TaskExplicability {
     // An optimal plan of P_H when one was found and kept; unset: not known (P_H unsolved,
     // or the evaluation came from somewhere that did not keep it).
     std::optional<std::vector<std::string>> human_plan;
+    // Set when the spec's robot_behaviour is EXPLAINING: the other option of the task
+    // (explaining.h chooses between acting explicably and explaining).
+    std::optional<TaskExplanation> explanation;
     // COST_OPTIMAL and COST_OPTIMAL_BEST_CASE: every ground action of some cost-optimal plan
     // of P_R, sorted, unique. These are the evaluation's robot witnesses there (all optimal
     // plans count, not only `plan`): a restricting modification touching none of them keeps

@@ -189,5 +189,38 @@ TEST(EvaluateDesign, KnownDesignAndUnknownNames) {
                  UnknownModification);
 }
 
+// robot_behaviour EXPLAINING (design/explaining.h): each task's choice between explaining and
+// acting explicably depends on the weights, so a design point re-chooses in objective_at. At
+// explanation_cost 20 the paper's barriers win (85.2632, both tasks act explicably); without
+// barrier-10-11, G1's observers expect 5 and see 7: act explicably costs e^2 * f_10 + 0.25 *
+// 10 * 7 per task, explaining (2 differences told) 1 * f_10 + 20 * 2 * f_10 + same robot
+// cost, so G1 acts explicably (e^2 = 7.39 < 41). Each marginal point must give exactly the
+// objective that evaluating its design does, under the spec's weights and under others.
+TEST(Explanation, ExplainingDesignPointsChooseAgainUnderOtherWeights) {
+    DesignProblem problem = load_design_problem(SPEC);
+    problem.weights.behaviour = RobotBehaviour::EXPLAINING;
+    problem.weights.explanation_cost = 20;
+    LocalEvaluator local(problem, 1);
+    EvaluationLog log(problem, local);
+    DesignResult result = search_design(problem, log, {});
+    ASSERT_EQ(result.best->ranked.configuration, (Configuration{B00_01, B10_11}));
+    EXPECT_NEAR(result.best->objective.value, f(10) + 60 + 18.75, 1e-9);
+    Explanation why = explain(problem, result, log, &local.planner(), {});
+    EXPECT_EQ(why.break_even.designs_compared, 0); // not computed: choices move with T, alpha
+    ASSERT_EQ(why.marginal.size(), 2u);
+    for (const auto &m : why.marginal) {
+        ASSERT_TRUE(m.without);
+        for (double x : {20.0, 1.0}) { // 1: explaining wins where acting explicably did
+            DesignProblem other = problem;
+            other.weights.explanation_cost = x;
+            LocalEvaluator evaluator(other, 1);
+            DesignResult direct = evaluate_design(other, evaluator, m.without->configuration, {});
+            EXPECT_NEAR(objective_at(other.weights, *m.without).value, direct.best->objective.value,
+                        1e-9)
+                << "x = " << x;
+        }
+    }
+}
+
 } // namespace
 } // namespace envdesign::design

@@ -149,7 +149,13 @@ void crossing(ostream &out, const char *what, const envdesign::crossing_t &c) {
 
 void break_even_section(ostream &out, const envdesign::design_result_t &r) {
     const auto &b = r.explanation.break_even;
-    out << "<h2>When would the answer change?</h2>\n<p>Among the " << b.designs_compared
+    out << "<h2>When would the answer change?</h2>\n";
+    if (b.designs_compared == 0) {
+        out << "<p>Not computed: with robot_behaviour EXPLAINING each task's choice between "
+               "explaining and acting explicably moves with T and alpha.</p>\n";
+        return;
+    }
+    out << "<p>Among the " << b.designs_compared
         << " designs whose every task was evaluated, by the search or for this page (a design "
            "never evaluated may change the answer sooner):</p><ul>\n";
     crossing(out, "with fewer uses, at T =", b.horizon_down);
@@ -222,11 +228,14 @@ std::string report_html(const envdesign::design_result_t &r, const std::string &
     marginal_section(out, r);
     break_even_section(out, r);
     ranking_section(out, r);
-    out << "<h2>How the objective depends on T and alpha</h2>\n";
-    figure(out, plots.objective_by_horizon,
-           "Objective of the top designs against the horizon T (other weights as in the spec).");
-    figure(out, plots.objective_by_alpha,
-           "Objective of the top designs against alpha (other weights as in the spec).");
+    if (!plots.objective_by_horizon.empty()) {
+        out << "<h2>How the objective depends on T and alpha</h2>\n";
+        figure(out, plots.objective_by_horizon,
+               "Objective of the top designs against the horizon T (other weights as in the "
+               "spec).");
+        figure(out, plots.objective_by_alpha,
+               "Objective of the top designs against alpha (other weights as in the spec).");
+    }
     const auto &c = r.counters;
     out << "<p class=muted>The search evaluated " << c.configurations_evaluated << " designs, "
         << c.planner_runs << " planner runs, " << shown(c.seconds)

@@ -205,6 +205,12 @@ std::string breakdown_plot(const envdesign::design_result_t &r) {
 } // namespace
 
 ReportPlots report_plots(const envdesign::design_result_t &result) {
+    // EXPLAINING: the objective at other T or alpha needs each task's choice again, which
+    // the design points do not carry (their expectations are NaN): no lines to draw.
+    bool explaining = std::any_of(result.tasks.begin(), result.tasks.end(),
+                                  [](const auto &t) { return t.has_explanation; });
+    if (explaining)
+        return {"", "", breakdown_plot(result)};
     return {lines_plot(result, true), lines_plot(result, false), breakdown_plot(result)};
 }
 

@@ -6,39 +6,62 @@ namespace {
 
 using nlohmann::json;
 
-json terms_json(const envdesign::design_terms_t &t) {
-    return {{"inexplicability", json_number(t.inexplicability)},
-            {"design_cost", json_number(t.design_cost)},
-            {"robot_cost", json_number(t.robot_cost)}};
+// robot_behaviour EXPLAINING: the tasks carry their explaining option, and the objective has
+// a fourth term, the explanations told over the horizon (weight 1; design/explaining.h).
+bool explaining(const envdesign::design_result_t &r) {
+    for (const auto &t : r.tasks)
+        if (t.has_explanation)
+            return true;
+    return false;
+}
+
+json terms_json(const envdesign::design_terms_t &t, bool explaining) {
+    json out = {{"inexplicability", json_number(t.inexplicability)},
+                {"design_cost", json_number(t.design_cost)},
+                {"robot_cost", json_number(t.robot_cost)}};
+    if (explaining)
+        out["explanation"] = json_number(t.explanation);
+    return out;
 }
 
 // The terms times their weights: they add up to the objective.
-json weighted_json(const envdesign::design_terms_t &t, const envdesign::explanation_t &w) {
-    return {{"inexplicability", json_number(w.alpha * t.inexplicability)},
-            {"design_cost", json_number(w.beta * t.design_cost)},
-            {"robot_cost", json_number(w.kappa * t.robot_cost)}};
+json weighted_json(const envdesign::design_terms_t &t, const envdesign::explanation_t &w,
+                   bool explaining) {
+    json out = {{"inexplicability", json_number(w.alpha * t.inexplicability)},
+                {"design_cost", json_number(w.beta * t.design_cost)},
+                {"robot_cost", json_number(w.kappa * t.robot_cost)}};
+    if (explaining)
+        out["explanation"] = json_number(t.explanation);
+    return out;
 }
 
-json objective_json(const envdesign::design_terms_t &t) {
-    return {{"objective", json_number(t.objective)}, {"terms", terms_json(t)}};
+json objective_json(const envdesign::design_terms_t &t, bool explaining) {
+    return {{"objective", json_number(t.objective)}, {"terms", terms_json(t, explaining)}};
 }
 
 json task_json(const envdesign::task_result_t &t) {
-    return {{"name", t.name},
-            {"probability", t.probability},
-            {"ie", json_number(t.ie)},
-            {"robot_cost", json_number(t.robot_cost)},
-            {"human_plan_cost", json_number(t.human_plan_cost)},
-            {"human_optimal_cost",
-             t.has_human_optimal_cost ? json_number(t.human_optimal_cost) : json()},
-            {"plan", t.plan}};
+    json out = {{"name", t.name},
+                {"probability", t.probability},
+                {"ie", json_number(t.ie)},
+                {"robot_cost", json_number(t.robot_cost)},
+                {"human_plan_cost", json_number(t.human_plan_cost)},
+                {"human_optimal_cost",
+                 t.has_human_optimal_cost ? json_number(t.human_optimal_cost) : json()},
+                {"plan", t.plan}};
+    if (t.has_explanation) { // EXPLAINING: the option taken and both options' key values
+        out["option"] = t.explained ? "explain" : "act_explicably";
+        out["explanation"] = t.explanation.found ? json(t.explanation.differences) : json();
+        out["explicable_ie"] = json_number(t.explicable_ie);
+        out["robot_optimal_cost"] = json_number(t.explanation.robot_optimal_cost);
+    }
+    return out;
 }
 
 json point_json(const envdesign::design_point_t &p) {
     return {{"design", p.design},
             {"objective", json_number(p.terms.objective)},
             {"design_cost", json_number(p.design_cost)},
-            {"terms", terms_json(p.terms)},
+            {"terms", terms_json(p.terms, p.terms.explanation != 0)},
             {"expected_ie", json_number(p.expected_ie)},
             {"expected_robot_cost", json_number(p.expected_robot_cost)}};
 }
@@ -138,13 +161,13 @@ void put_explanation(json &out, const envdesign::design_result_t &r) {
     const envdesign::explanation_t &e = r.explanation;
     out["weights"] = {{"alpha", e.alpha}, {"beta", e.beta},       {"kappa", e.kappa},
                       {"gamma", e.gamma}, {"horizon", e.horizon}, {"distance", e.distance}};
-    out["weighted_terms"] = weighted_json(r.best, e);
+    out["weighted_terms"] = weighted_json(r.best, e, explaining(r));
     out["least_inexplicability"] = json_number(e.least_inexplicability);
     out["explanation"] = explanation_json(r);
     // Beside SPEC.md's "baseline", not in it: clients that print SPEC.md's fields (the
     // Python client) stay equal to this one.
     if (r.has_baseline)
-        out["explanation"]["baseline_weighted_terms"] = weighted_json(r.baseline, e);
+        out["explanation"]["baseline_weighted_terms"] = weighted_json(r.baseline, e, explaining(r));
 }
 
 } // namespace
@@ -154,7 +177,7 @@ json result_json_value(const envdesign::design_result_t &r) {
     out["status"] = r.status;
     if (r.has_design) {
         out["design"] = r.design;
-        out.update(objective_json(r.best));
+        out.update(objective_json(r.best, explaining(r)));
         out["tasks"] = json::array();
         for (const auto &t : r.tasks)
             out["tasks"].push_back(task_json(t));
@@ -164,7 +187,7 @@ json result_json_value(const envdesign::design_result_t &r) {
         out["terms"] = nullptr;
         out["tasks"] = json::array();
     }
-    out["baseline"] = r.has_baseline ? objective_json(r.baseline) : json();
+    out["baseline"] = r.has_baseline ? objective_json(r.baseline, explaining(r)) : json();
     put_counters(out, r.counters, !r.sender.empty()); // a coordinator sent it
     out["limit_reached"] = r.limit_reached != 0;
     if (r.has_gap)

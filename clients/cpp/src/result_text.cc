@@ -13,8 +13,10 @@ using Weights = envdesign::explanation_t;
 
 void terms_line(std::ostream &out, const char *label, const Terms &t) {
     out << label << shown(t.objective) << " (inexplicability " << shown(t.inexplicability)
-        << ", design cost " << shown(t.design_cost) << ", robot cost " << shown(t.robot_cost)
-        << ")\n";
+        << ", design cost " << shown(t.design_cost) << ", robot cost " << shown(t.robot_cost);
+    if (t.explanation != 0) // EXPLAINING: the explanations told over the horizon
+        out << ", explanation " << shown(t.explanation);
+    out << ")\n";
 }
 
 // "52.23 = 1 x 12.83 inexplicability + 30 x 1.5 design cost + 0.25 x 244 robot cost"
@@ -23,7 +25,27 @@ void weighted_line(std::ostream &out, const char *label, const Terms &t, const W
         << " inexplicability (" << shown(w.alpha) << " x " << shown(t.inexplicability) << ") + "
         << shown(w.beta * t.design_cost) << " design cost (" << shown(w.beta) << " x "
         << shown(t.design_cost) << ") + " << shown(w.kappa * t.robot_cost) << " robot cost ("
-        << shown(w.kappa) << " x " << shown(t.robot_cost) << ")\n";
+        << shown(w.kappa) << " x " << shown(t.robot_cost) << ")";
+    if (t.explanation != 0) // EXPLAINING: its weight is 1 (design/explaining.h)
+        out << " + " << shown(t.explanation) << " explanation";
+    out << "\n";
+}
+
+// EXPLAINING: "  explains: +init (a), -pre move (b)" or "  acts explicably (explanation: ...)".
+void explanation_line(std::ostream &out, const envdesign::task_result_t &t) {
+    if (!t.has_explanation)
+        return;
+    out << (t.explained ? "  explains" : "  acts explicably (explanation");
+    if (!t.explanation.found) {
+        out << ": none)\n";
+        return;
+    }
+    out << ":";
+    for (std::size_t i = 0; i < t.explanation.differences.size(); ++i)
+        out << (i ? ", " : " ") << t.explanation.differences[i];
+    if (t.explanation.differences.empty())
+        out << " nothing to tell";
+    out << (t.explained ? "\n" : ")\n");
 }
 
 void least_line(std::ostream &out, const envdesign::design_result_t &r) {
@@ -69,6 +91,7 @@ void task_block(std::ostream &out, const envdesign::task_result_t &t,
                 const envdesign::task_explanation_t &e) {
     const auto &b = e.baseline;
     out << "task " << t.name << " (probability " << shown(t.probability) << "):\n";
+    explanation_line(out, t);
     out << "    " << std::left << std::setw(28) << "" << std::right << std::setw(12)
         << "empty design" << std::setw(12) << "chosen"
         << "\n";
@@ -116,6 +139,11 @@ void crossing_line(std::ostream &out, const char *what, const envdesign::crossin
 void break_even_block(std::ostream &out, const envdesign::design_result_t &r) {
     const auto &b = r.explanation.break_even;
     const Weights &w = r.explanation;
+    if (b.designs_compared == 0) {
+        out << "break-even: not computed (with robot_behaviour EXPLAINING each task's choice "
+               "between explaining and acting explicably moves with T and alpha)\n";
+        return;
+    }
     out << "break-even (among the " << b.designs_compared << " designs evaluated in full):\n";
     out << "  horizon: the chosen design ranks first for T in ["
         << (b.horizon_down.found ? static_cast<long long>(b.horizon_down.at) + 1 : 1LL) << ", "
@@ -181,6 +209,7 @@ std::string result_text(const envdesign::design_result_t &r) {
             for (const auto &step : t.plan)
                 out << " " << step;
             out << "\n";
+            explanation_line(out, t);
         }
     ranking_block(out, r);
     if (r.has_gap)

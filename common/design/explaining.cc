@@ -1,0 +1,75 @@
+#include "design/explaining.h"
+
+#include "design/minimal_explanation.h"
+#include "design/explicability.h"
+#include "design/objective.h"
+
+#include <cmath>
+
+namespace envdesign::design {
+namespace {
+
+double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
+
+// alpha * H * ie + extra + kappa * T * cost, infinite (not NaN) when any part is.
+double contribution(const ObjectiveWeights &w, double ie, double extra, double cost) {
+    if (std::isinf(ie) || std::isinf(cost))
+        return INF;
+    double value = w.alpha * discounted_horizon(w) * ie + extra + w.kappa * w.horizon * cost;
+    return std::isnan(value) ? INF : value;
+}
+
+// The explanation when the most explicable plan is itself optimal for both models: pi is
+// then an optimal plan of P_R that needs no explanation (E = {}), so no search is needed.
+std::optional<TaskExplanation> nothing_to_tell(const TaskExplicability &t, double robot_optimal,
+                                               Distance distance) {
+    if (t.status != ExplicabilityStatus::SOLVED || t.ie != least_ie(distance) ||
+        t.robot_cost != robot_optimal)
+        return std::nullopt;
+    return TaskExplanation{true, robot_optimal, t.plan, {}};
+}
+
+} // namespace
+
+BehaviourChoice choose_behaviour(const ObjectiveWeights &w, const TaskExplicability &t) {
+    BehaviourChoice act{t.status == ExplicabilityStatus::SOLVED, false, t.ie, t.robot_cost, 0};
+    if (w.behaviour != RobotBehaviour::EXPLAINING || !t.explanation || !t.explanation->found)
+        return act;
+    const TaskExplanation &x = *t.explanation;
+    double told = w.explanation_cost * static_cast<double>(x.differences.size());
+    BehaviourChoice explain{true, true, least_ie(w.distance), x.robot_optimal_cost, told};
+    double act_value = act.finite ? contribution(w, act.ie, 0, act.robot_cost) : INF;
+    double explain_value =
+        contribution(w, explain.ie, discounted_horizon(w) * told, explain.robot_cost);
+    if (std::isinf(explain_value))
+        return act;
+    return clearly_greater(act_value, explain_value) ? explain : act;
+}
+
+TaskExplicability evaluate_task_behaviour(const ModelPair &models, const ObjectiveWeights &w,
+                                          PlanCache &planner, const Deadline &deadline) {
+    TaskExplicability t = evaluate_explicability(models, w.distance, planner, deadline);
+    if (w.behaviour != RobotBehaviour::EXPLAINING || t.status == ExplicabilityStatus::LIMIT)
+        return t;
+    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline);
+    if (robot.status == PlanStatus::LIMIT)
+        return TaskExplicability{};
+    if (robot.status == PlanStatus::UNSOLVABLE) {
+        t.explanation = TaskExplanation{};
+        return t;
+    }
+    double robot_optimal = static_cast<double>(robot.cost);
+    if ((t.explanation = nothing_to_tell(t, robot_optimal, w.distance)))
+        return t;
+    ExplanationSearch search = minimal_explanation(models, robot.plan, planner, deadline);
+    if (search.status == ExplanationStatus::LIMIT)
+        return TaskExplicability{};
+    TaskExplanation x{
+        search.status == ExplanationStatus::FOUND, robot_optimal, std::move(robot.plan), {}};
+    for (int i : search.chosen)
+        x.differences.push_back(search.differences[i].text);
+    t.explanation = std::move(x);
+    return t;
+}
+
+} // namespace envdesign::design
