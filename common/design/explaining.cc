@@ -1,7 +1,7 @@
 #include "design/explaining.h"
 
-#include "design/minimal_explanation.h"
 #include "design/explicability.h"
+#include "design/minimal_explanation.h"
 #include "design/objective.h"
 
 #include <cmath>

@@ -101,9 +101,10 @@ DesignResult run(const DesignProblem &problem, SearchMethod method = SearchMetho
     return search_design(problem, evaluator, options);
 }
 
-// Restaurant (c), EXPLAINING, x = 1. Both tasks: explain 2 differences (minimal_explanation_test.cc),
-// IE 1, c_R* 7 and 8. Objective of {} = H * 1 + 0.25 * 10 * 7.5 + H * 2 = 3 H + 18.75
-// = 38.2896; the paper's best design (two barriers, acting explicably) costs 60 + H + 18.75.
+// Restaurant (c), EXPLAINING, x = 1. Both tasks: explain 2 differences
+// (minimal_explanation_test.cc), IE 1, c_R* 7 and 8. Objective of {} = H * 1 + 0.25 * 10 * 7.5 + H
+// * 2 = 3 H + 18.75 = 38.2896; the paper's best design (two barriers, acting explicably) costs 60 +
+// H + 18.75.
 TEST(ExplainingRestaurant, CheapExplanationsBeatBarriers) {
     DesignProblem problem =
         load_design_problem(RESTAURANT + "c-two-tasks-t10-explaining.textproto");

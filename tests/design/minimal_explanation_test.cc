@@ -3,8 +3,8 @@
 // of action sequences (brute_force.h, no planner); and hand-worked cases.
 
 #include "brute_force.h"
-#include "design/minimal_explanation.h"
 #include "design/explicability.h"
+#include "design/minimal_explanation.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"

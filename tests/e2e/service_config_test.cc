@@ -35,7 +35,8 @@ protected:
         std::ofstream(path) << text;
         return path;
     }
-    Outcome check(const std::string &service, const std::string &conf, const std::string &flags = "") {
+    Outcome check(const std::string &service, const std::string &conf,
+                  const std::string &flags = "") {
         return run(binary(service) + " --config " + conf + " " + flags + " --check-config");
     }
 };
