@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 namespace envdesign::testing {
 namespace {
@@ -82,6 +84,35 @@ TEST(DesignCommand, ExplainsTheRestaurant) {
     EXPECT_NE(text.out.find("objective: 85.26 = 6.513 inexplicability"), std::string::npos)
         << text.out;
     EXPECT_NE(text.out.find("barrier-10-11: 96.88 without it (+11.61)"), std::string::npos);
+}
+
+// robot_behaviour EXPLAINING (restaurant, x = 1; tests/design/explaining_test.cc): no design,
+// both tasks explain the two closed passages, 38.2896 = f_10 + 18.75 + 2 f_10 (two differences
+// told on every repetition). The weighted terms, with the explanation term, add up; the page
+// names the option and the differences; break-even is not claimed for this mode.
+TEST(ReportCommand, ExplainingRobotShowsItsExplanations) {
+    const std::string spec =
+        std::string(ENVDESIGN_EXAMPLES) + "/restaurant/c-two-tasks-t10-explaining.textproto";
+    nlohmann::json r = json_of("design " + spec + " --json");
+    EXPECT_EQ(r.at("design"), nlohmann::json::array());
+    EXPECT_NEAR(r.at("objective").get<double>(), f10() + 18.75 + 2 * f10(), 1e-6);
+    const auto &w = r.at("weighted_terms");
+    EXPECT_NEAR(w.at("inexplicability").get<double>() + w.at("design_cost").get<double>() +
+                    w.at("robot_cost").get<double>() + w.at("explanation").get<double>(),
+                r.at("objective").get<double>(), 1e-9);
+    for (const auto &task : r.at("tasks")) {
+        EXPECT_EQ(task.at("option"), "explain");
+        EXPECT_EQ(task.at("explanation"),
+                  (nlohmann::json{"-init (connected c00 c01)", "-init (connected c10 c11)"}));
+    }
+    std::string page = ::testing::TempDir() + "/explaining-report.html";
+    CommandResult report = run_envdesign("report " + spec + " -o " + page, false);
+    ASSERT_EQ(report.exit_code, 0) << report.out;
+    std::ifstream in(page);
+    std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(html.find("follows its own plan and explains"), std::string::npos);
+    EXPECT_NE(html.find("<code>-init (connected c10 c11)</code>"), std::string::npos);
+    EXPECT_NE(html.find("Not computed: with robot_behaviour EXPLAINING"), std::string::npos);
 }
 
 } // namespace

@@ -96,6 +96,18 @@ void task_section(ostream &out, const envdesign::task_result_t &t,
     const auto &b = e.baseline;
     auto cell = [&](double v, bool known) { return "<td>" + (known ? shown(v) : "?") + "</td>"; };
     out << "<h3>Task " << h(t.name) << " (probability " << shown(t.probability) << ")</h3>\n";
+    if (t.has_explanation) { // robot_behaviour EXPLAINING: the option taken and what is told
+        out << "<p>The robot "
+            << (t.explained ? "follows its own plan and explains" : "acts explicably")
+            << "; the explanation " << (t.explained ? "it tells" : "it would need") << ": ";
+        if (!t.explanation.found)
+            out << "none exists";
+        else if (t.explanation.differences.empty())
+            out << "nothing to tell";
+        for (std::size_t i = 0; i < t.explanation.differences.size(); ++i)
+            out << (i ? ", " : "") << "<code>" << h(t.explanation.differences[i]) << "</code>";
+        out << ".</p>\n";
+    }
     out << "<table><tr><th class=l></th><th>empty design</th><th>chosen design</th></tr>\n";
     out << "<tr><td class=l>inexplicability IE</td>" << cell(b.ie, e.has_baseline)
         << cell(t.ie, true) << "</tr>\n";
