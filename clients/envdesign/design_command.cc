@@ -66,6 +66,10 @@ int run_design_remote(const DesignFlags &flags) {
     client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
     if (result.status == "error")
         throw CommandError(result.exit_code, result.error);
+    auto unsolvable = remote_unsolvable_task_warnings(
+        flags.spec, result.json, design::Deadline::in(10).with_stop(&interrupted));
+    print_warnings(unsolvable);
+    warnings.insert(warnings.end(), unsolvable.begin(), unsolvable.end());
     std::cout << (flags.json ? with_warnings(result.json, warnings) + "\n" : result.text)
               << std::flush;
     if (result.exit_code == 4)

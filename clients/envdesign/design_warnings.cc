@@ -47,6 +47,40 @@ std::vector<std::string> remote_spec_warnings(const std::string &spec_path) {
     return {};
 }
 
+std::vector<std::string> remote_unsolvable_task_warnings(const std::string &spec_path,
+                                                         const std::string &result_json,
+                                                         const design::Deadline &deadline) {
+    auto result = nlohmann::json::parse(result_json, nullptr, false);
+    if (result.is_discarded() || !result.contains("explanation"))
+        return {};
+    const auto &tasks = result["explanation"].value("tasks", nlohmann::json::array());
+    bool any = false;
+    for (const auto &t : tasks)
+        any = any || (t.contains("baseline") && t["baseline"].is_object() &&
+                      t["baseline"].value("ie", nlohmann::json()) == "inf");
+    if (!any)
+        return {};
+    try {
+        design::DesignProblem problem = design::load_design_problem(spec_path);
+        if (tasks.size() != problem.tasks.size())
+            return {};
+        design::DesignResult known;
+        known.baseline.emplace();
+        for (const auto &t : tasks) {
+            design::TaskExplicability e;
+            bool infinite =
+                t["baseline"].is_object() && t["baseline"].value("ie", nlohmann::json()) == "inf";
+            e.status = infinite ? design::ExplicabilityStatus::INEXPLICABLE
+                                : design::ExplicabilityStatus::SOLVED;
+            known.baseline->tasks.push_back(e);
+        }
+        design::PlanCache planner(planning::PlannerOptions{});
+        return unsolvable_task_warnings(problem, known, planner, deadline);
+    } catch (const pddl::ParseError &) { // the coordinator's answer names it
+        return {};
+    }
+}
+
 std::string with_warnings(const std::string &json_text, const std::vector<std::string> &warnings) {
     if (warnings.empty())
         return json_text;

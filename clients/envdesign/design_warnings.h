@@ -24,6 +24,13 @@ std::vector<std::string> unsolvable_task_warnings(const design::DesignProblem &p
 // and reports bad input; a spec that does not read gives none here).
 std::vector<std::string> remote_spec_warnings(const std::string &spec_path);
 
+// With --connect: the unsolvable-task lines of `result_json` (the coordinator's result, whose
+// explanation has each task's baseline): tasks with infinite IE there are planned here, from
+// the spec file read here, for the reason, as in-process. None if the spec does not read.
+std::vector<std::string> remote_unsolvable_task_warnings(const std::string &spec_path,
+                                                         const std::string &result_json,
+                                                         const design::Deadline &deadline);
+
 // `json_text` (a JSON result object) with "warnings": `warnings` when there are any.
 std::string with_warnings(const std::string &json_text, const std::vector<std::string> &warnings);
 

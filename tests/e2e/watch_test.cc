@@ -166,6 +166,23 @@ TEST(Warnings, ProbabilitiesWarnThroughTheCoordinatorToo) {
     EXPECT_EQ(remote["objective"], local["objective"]);
 }
 
+// Tasks unsolvable in the unmodified models are named with the reason with --connect too:
+// the same lines as in-process (tests/cli/usability_test.cc has their wording).
+TEST(Warnings, UnsolvableTasksAreNamedThroughTheCoordinatorToo) {
+    LocalCluster cluster(1);
+    const std::string spec = source("tests/data/usability/unsolvable-tasks.textproto");
+    int remote_code = -1, local_code = -1;
+    auto remote = nlohmann::json::parse(command_output(binary("envdesign") + " design " + spec +
+                                                           " --json --connect '" + cluster.url() +
+                                                           "' 2>/dev/null",
+                                                       &remote_code));
+    auto local = nlohmann::json::parse(command_output(
+        binary("envdesign") + " design " + spec + " --json 2>/dev/null", &local_code));
+    EXPECT_EQ(remote_code, local_code);
+    ASSERT_GE(local["warnings"].size(), 1u) << local;
+    EXPECT_EQ(remote["warnings"], local["warnings"]);
+}
+
 TEST(Watch, ABadUrlIsExitTwoWithAJsonError) {
     auto dir = std::filesystem::temp_directory_path() /
                ("envdesign-watch-url-" + std::to_string(getpid()));
