@@ -45,6 +45,19 @@ envdesign::task_explanation_t task_explanation_message(const design::DesignProbl
     return m;
 }
 
+const char *behaviour_name(design::RobotBehaviour behaviour) {
+    switch (behaviour) {
+    case design::RobotBehaviour::COST_OPTIMAL:
+        return "COST_OPTIMAL";
+    case design::RobotBehaviour::COST_OPTIMAL_BEST_CASE:
+        return "COST_OPTIMAL_BEST_CASE";
+    case design::RobotBehaviour::EXPLAINING:
+        return "EXPLAINING";
+    default:
+        return "EXPLICABLE";
+    }
+}
+
 const char *distance_name(design::Distance distance) {
     return distance == design::Distance::COST_DIFF ? "COST_DIFF" : "EXP_COST_DIFF";
 }
@@ -99,6 +112,7 @@ envdesign::explanation_t explanation_message(const design::DesignProblem &proble
     m.gamma = e.weights.gamma;
     m.horizon = e.weights.horizon;
     m.distance = distance_name(e.weights.distance);
+    m.robot_behaviour = behaviour_name(e.weights.behaviour);
     m.discounted_horizon = e.discounted_horizon;
     m.least_ie = e.least_ie;
     m.least_inexplicability = e.least_inexplicability;
@@ -121,6 +135,7 @@ envdesign::explanation_t explanation_message(const design::DesignProblem &proble
 envdesign::explanation_t empty_explanation() {
     envdesign::explanation_t m{};
     m.distance = "EXP_COST_DIFF";
+    m.robot_behaviour = "EXPLICABLE";
     return m;
 }
 

@@ -45,6 +45,16 @@ double objective_with(const envdesign::explanation_t &w, const envdesign::design
            w.kappa * horizon * point.expected_robot_cost;
 }
 
+std::string plan_name(const std::string &robot_behaviour) {
+    if (robot_behaviour == "COST_OPTIMAL")
+        return "the worst of the robot's optimal plans";
+    if (robot_behaviour == "COST_OPTIMAL_BEST_CASE")
+        return "the best of the robot's optimal plans";
+    if (robot_behaviour == "EXPLAINING")
+        return "the plan the robot follows";
+    return "the most explicable plan";
+}
+
 std::string design_set(const std::vector<std::string> &design) {
     if (design.empty())
         return "{} (the empty design)";

@@ -91,7 +91,7 @@ void plan_cell(ostream &out, const std::vector<std::string> &plan,
     out << "</td>";
 }
 
-void task_section(ostream &out, const envdesign::task_result_t &t,
+void task_section(ostream &out, const std::string &behaviour, const envdesign::task_result_t &t,
                   const envdesign::task_explanation_t &e) {
     const auto &b = e.baseline;
     auto cell = [&](double v, bool known) { return "<td>" + (known ? shown(v) : "?") + "</td>"; };
@@ -119,7 +119,8 @@ void task_section(ostream &out, const envdesign::task_result_t &t,
     out << "<tr><td class=l>human cost of &pi;, c_H(&pi;)</td>"
         << cell(b.human_plan_cost, e.has_baseline) << cell(t.human_plan_cost, true)
         << "</tr></table>\n";
-    out << "<table><tr><th class=l>most explicable plan &pi; (what the robot does)</th>"
+    out << "<table><tr><th class=l>&pi;, " << h(plan_name(behaviour))
+        << " (what the robot does)</th>"
            "<th class=l>robot's optimal plan</th><th class=l>what observers expect</th></tr><tr>";
     plan_cell(out, t.plan, {}, false);
     if (e.has_robot_plan)
@@ -236,7 +237,7 @@ std::string report_html(const envdesign::design_result_t &r, const std::string &
            "and the next designs of the ranking below.");
     out << "<h2>Each task, before and after</h2>\n";
     for (std::size_t i = 0; i < r.tasks.size() && i < r.explanation.tasks.size(); ++i)
-        task_section(out, r.tasks[i], r.explanation.tasks[i]);
+        task_section(out, r.explanation.robot_behaviour, r.tasks[i], r.explanation.tasks[i]);
     marginal_section(out, r);
     break_even_section(out, r);
     ranking_section(out, r);

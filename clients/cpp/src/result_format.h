@@ -31,6 +31,10 @@ std::string result_text(const envdesign::design_result_t &result);
 double objective_with(const envdesign::explanation_t &weights,
                       const envdesign::design_point_t &point, int horizon, double alpha);
 
+// What a task's plan pi is under the result's robot_behaviour (explanation_t): "the most
+// explicable plan" (the paper), "the worst of the robot's optimal plans", ...
+std::string plan_name(const std::string &robot_behaviour);
+
 // "{a, b}" or "{} (the empty design)".
 std::string design_set(const std::vector<std::string> &design);
 

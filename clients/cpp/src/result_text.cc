@@ -87,7 +87,7 @@ void row(std::ostream &out, const char *label, double before, double after, bool
         << (known ? shown(before) : "?") << std::setw(12) << shown(after) << "\n";
 }
 
-void task_block(std::ostream &out, const envdesign::task_result_t &t,
+void task_block(std::ostream &out, const std::string &behaviour, const envdesign::task_result_t &t,
                 const envdesign::task_explanation_t &e) {
     const auto &b = e.baseline;
     out << "task " << t.name << " (probability " << shown(t.probability) << "):\n";
@@ -103,7 +103,8 @@ void task_block(std::ostream &out, const envdesign::task_result_t &t,
     out << "  plans under the chosen design:\n";
     if (e.has_robot_plan)
         plan_line(out, "robot's optimal:", e.robot_plan);
-    plan_line(out, "most explicable (pi):", t.plan);
+    plan_line(out, "pi:", t.plan);
+    out << "      (pi is " << plan_name(behaviour) << ")\n";
     if (e.has_expected_plan)
         plan_line(out, "observers expect:", e.expected_plan);
     if (e.has_robot_plan)
@@ -166,7 +167,7 @@ void break_even_block(std::ostream &out, const envdesign::design_result_t &r) {
 
 void explanation_block(std::ostream &out, const envdesign::design_result_t &r) {
     for (std::size_t i = 0; i < r.tasks.size() && i < r.explanation.tasks.size(); ++i)
-        task_block(out, r.tasks[i], r.explanation.tasks[i]);
+        task_block(out, r.explanation.robot_behaviour, r.tasks[i], r.explanation.tasks[i]);
     marginal_block(out, r);
     break_even_block(out, r);
 }
