@@ -22,8 +22,8 @@ xvfb_pid=""
 spy_pid=""
 
 cleanup() {
-    [ -n "$spy_pid" ] && kill "$spy_pid" 2>/dev/null || true
-    [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null || true
+    if [ -n "$spy_pid" ]; then kill "$spy_pid" 2>/dev/null || true; fi
+    if [ -n "$xvfb_pid" ]; then kill "$xvfb_pid" 2>/dev/null || true; fi
     bash "$root/deploy/cluster.sh" stop --dir "$work/cluster" >/dev/null || true
     rm -rf "$work"
 }
@@ -39,7 +39,8 @@ Xvfb -displayfd 3 -screen 0 800x720x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
 xvfb_pid=$!
 exec 3>&-
 for _ in $(seq 50); do [ -s "$work/display" ] && break; sleep 0.1; done
-export DISPLAY=":$(cat "$work/display")"
+DISPLAY=":$(cat "$work/display")"
+export DISPLAY
 
 # lcm-spy.sh execs java, so this pid is lcm-spy's.
 bash "$root/deploy/lcm-spy.sh" --lcm-url "$url" >"$work/spy.log" 2>&1 &
