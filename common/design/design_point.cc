@@ -1,7 +1,5 @@
 #include "design/design_point.h"
 
-#include "design/explaining.h"
-
 #include <cmath>
 
 namespace envdesign::design {
@@ -38,37 +36,9 @@ DesignPoint design_point(const DesignProblem &problem, const Configuration &conf
     return point;
 }
 
-namespace {
-
-// EXPLAINING: as objective_of() does, the option each task takes under `w`.
-Objective explaining_objective_at(const ObjectiveWeights &w, const DesignPoint &point) {
-    Objective out;
-    out.terms.design_cost = point.design_cost;
-    double expected_ie = 0, expected_cost = 0, expected_explanation = 0;
-    for (std::size_t i = 0; i < point.explaining_tasks.size(); ++i) {
-        double p = point.probabilities[i];
-        if (p <= 0)
-            continue;
-        BehaviourChoice c = choose_behaviour(w, point.explaining_tasks[i]);
-        if (!c.finite)
-            return out; // infinite
-        expected_ie += p * c.ie;
-        expected_cost += p * c.robot_cost;
-        expected_explanation += p * c.explanation;
-    }
-    out.terms.inexplicability = expected_ie * discounted_horizon(w);
-    out.terms.robot_cost = w.horizon * expected_cost;
-    out.terms.explanation = expected_explanation * discounted_horizon(w);
-    out.value = w.alpha * out.terms.inexplicability + w.beta * out.terms.design_cost +
-                w.kappa * out.terms.robot_cost + out.terms.explanation;
-    return out;
-}
-
-} // namespace
-
 Objective objective_at(const ObjectiveWeights &w, const DesignPoint &point) {
-    if (!point.explaining_tasks.empty())
-        return explaining_objective_at(w, point);
+    if (!point.explaining_tasks.empty()) // each task's option chosen again under `w`
+        return objective_of(w, point.design_cost, point.probabilities, point.explaining_tasks);
     Objective out;
     out.terms.design_cost = point.design_cost;
     if (point.expected_ie == INF)

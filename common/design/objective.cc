@@ -25,15 +25,20 @@ double discounted_horizon(const ObjectiveWeights &weights) {
 
 Objective objective_of(const DesignProblem &problem, double design_cost,
                        const std::vector<TaskExplicability> &tasks) {
-    std::vector<const TaskExplicability *> known;
-    for (const auto &t : tasks)
-        known.push_back(&t);
+    std::vector<double> probabilities;
+    for (std::size_t i = 0; i < tasks.size(); ++i)
+        probabilities.push_back(problem.tasks[i].probability);
+    return objective_of(problem.weights, design_cost, probabilities, tasks);
+}
+
+Objective objective_of(const ObjectiveWeights &w, double design_cost,
+                       const std::vector<double> &probabilities,
+                       const std::vector<TaskExplicability> &tasks) {
     Objective out;
     out.terms.design_cost = design_cost;
-    const ObjectiveWeights &w = problem.weights;
     double expected_ie = 0, expected_cost = 0, expected_explanation = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
-        double p = problem.tasks[i].probability;
+        double p = probabilities[i];
         if (p <= 0)
             continue;
         BehaviourChoice c = choose_behaviour(w, tasks[i]);

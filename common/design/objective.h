@@ -38,6 +38,12 @@ double discounted_horizon(const ObjectiveWeights &weights);
 Objective objective_of(const DesignProblem &problem, double design_cost,
                        const std::vector<TaskExplicability> &tasks);
 
+// The same sum with the weights and probabilities given apart (design points re-weigh
+// stored evaluations under other weights, design_point.h): `probabilities[i]` of `tasks[i]`.
+Objective objective_of(const ObjectiveWeights &weights, double design_cost,
+                       const std::vector<double> &probabilities,
+                       const std::vector<TaskExplicability> &tasks);
+
 // A lower bound on the objective when only some tasks are known (`known[i]` null: task i
 // not evaluated yet): unknown tasks count with the least IE the distance allows (1 or 0)
 // and robot cost `robot_cost_bounds[i]` when given (INF: the robot has no plan, so neither
