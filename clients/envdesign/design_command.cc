@@ -83,10 +83,7 @@ int run_design_remote(const DesignFlags &flags) {
 void add_design_flags(CLI::App &command, DesignFlags &flags) {
     command.add_option("spec", flags.spec, "design problem file (.textproto or .json)")->required();
     command.add_flag("--json", flags.json, "print a JSON result");
-    command.add_option("--workers", flags.workers, "planner threads")->check(CLI::Range(1, 256));
-    command
-        .add_option("--time-limit", flags.time_limit_s, "seconds (0: none; default: the spec's)")
-        ->check(CLI::NonNegativeNumber);
+    add_engine_flags(command, flags.workers, flags.time_limit_s, flags.heuristic);
     command
         .add_option("--max-design-size", flags.max_design_size,
                     "most modifications in a design (0: no limit; default: the spec's)")
@@ -101,8 +98,6 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
         ->check(CLI::Range(0, 100000));
     command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
         ->check(CLI::IsMember({"none", "relevant"}));
-    command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
-        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
     command.add_option("--connect", flags.connect, "LCM URL of a running coordinator");
     command.add_option("--key-file", flags.key_file,
                        "with --connect: bus keys (default: $ENVDESIGN_KEY_FILE; deploy/LAN.md)");

@@ -41,12 +41,7 @@ void add_evaluate_flags(CLI::App &command, EvaluateFlags &flags) {
                     "the modifications, comma-separated ('' for the empty design)")
         ->required();
     command.add_flag("--json", flags.json, "print a JSON result");
-    command.add_option("--workers", flags.workers, "planner threads")->check(CLI::Range(1, 256));
-    command
-        .add_option("--time-limit", flags.time_limit_s, "seconds (0: none; default: the spec's)")
-        ->check(CLI::NonNegativeNumber);
-    command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
-        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+    add_engine_flags(command, flags.workers, flags.time_limit_s, flags.heuristic);
 }
 
 int run_evaluate(const EvaluateFlags &flags) {

@@ -7,6 +7,15 @@
 #include <algorithm>
 
 namespace envdesign::cli {
+
+void add_engine_flags(CLI::App &command, int &workers, double &time_limit_s,
+                      std::string &heuristic) {
+    command.add_option("--workers", workers, "planner threads")->check(CLI::Range(1, 256));
+    command.add_option("--time-limit", time_limit_s, "seconds (0: none; default: the spec's)")
+        ->check(CLI::NonNegativeNumber);
+    command.add_option("--heuristic", heuristic, "lmcut | hmax | blind")
+        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+}
 namespace {
 
 planning::PlannerOptions planner_options(const std::string &heuristic) {

@@ -9,9 +9,16 @@
 #include "design/local_evaluator.h"
 #include "envdesign/design_result_t.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <string>
 
 namespace envdesign::cli {
+
+// The flags of the local engine, the same on design, evaluate and report: --workers,
+// --time-limit (default: the spec's) and --heuristic.
+void add_engine_flags(CLI::App &command, int &workers, double &time_limit_s,
+                      std::string &heuristic);
 
 class LocalRun {
 public:

@@ -22,12 +22,7 @@ void add_report_flags(CLI::App &command, ReportFlags &flags) {
     command.add_option("-o,--output", flags.output, "the HTML file to write")->required();
     command.add_option("--ranking", flags.ranking, "designs in the ranking and the plots")
         ->check(CLI::Range(1, 100));
-    command.add_option("--workers", flags.workers, "planner threads")->check(CLI::Range(1, 256));
-    command
-        .add_option("--time-limit", flags.time_limit_s, "seconds (0: none; default: the spec's)")
-        ->check(CLI::NonNegativeNumber);
-    command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
-        ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
+    add_engine_flags(command, flags.workers, flags.time_limit_s, flags.heuristic);
 }
 
 int run_report(const ReportFlags &flags) {
