@@ -146,17 +146,28 @@ TEST(JsonErrors, BadInputThroughTheCoordinatorNamesFileLineAndColumn) {
     EXPECT_EQ(error["error"].get<std::string>().rfind("unknown action 'fly'", 0), 0u) << error;
 }
 
+// `envdesign design SPEC --json` through the coordinator of `cluster` and in-process.
+struct BothRuns {
+    nlohmann::json remote, local;
+    int remote_code = -1, local_code = -1;
+};
+
+BothRuns design_both_ways(const LocalCluster &cluster, const std::string &spec) {
+    BothRuns r;
+    r.remote = nlohmann::json::parse(command_output(binary("envdesign") + " design " + spec +
+                                                        " --json --connect '" + cluster.url() +
+                                                        "' 2>/dev/null",
+                                                    &r.remote_code));
+    r.local = nlohmann::json::parse(command_output(
+        binary("envdesign") + " design " + spec + " --json 2>/dev/null", &r.local_code));
+    return r;
+}
+
 // Probabilities that do not sum to 1 warn with --connect as in-process: the same line.
 TEST(Warnings, ProbabilitiesWarnThroughTheCoordinatorToo) {
     LocalCluster cluster(1);
     const std::string spec = source("tests/data/usability/probabilities-1.1.textproto");
-    int remote_code = -1, local_code = -1;
-    auto remote = nlohmann::json::parse(command_output(binary("envdesign") + " design " + spec +
-                                                           " --json --connect '" + cluster.url() +
-                                                           "' 2>/dev/null",
-                                                       &remote_code));
-    auto local = nlohmann::json::parse(command_output(
-        binary("envdesign") + " design " + spec + " --json 2>/dev/null", &local_code));
+    auto [remote, local, remote_code, local_code] = design_both_ways(cluster, spec);
     EXPECT_EQ(remote_code, 0);
     EXPECT_EQ(local_code, 0);
     ASSERT_EQ(remote["warnings"].size(), 1u) << remote;
@@ -171,13 +182,7 @@ TEST(Warnings, ProbabilitiesWarnThroughTheCoordinatorToo) {
 TEST(Warnings, UnsolvableTasksAreNamedThroughTheCoordinatorToo) {
     LocalCluster cluster(1);
     const std::string spec = source("tests/data/usability/unsolvable-tasks.textproto");
-    int remote_code = -1, local_code = -1;
-    auto remote = nlohmann::json::parse(command_output(binary("envdesign") + " design " + spec +
-                                                           " --json --connect '" + cluster.url() +
-                                                           "' 2>/dev/null",
-                                                       &remote_code));
-    auto local = nlohmann::json::parse(command_output(
-        binary("envdesign") + " design " + spec + " --json 2>/dev/null", &local_code));
+    auto [remote, local, remote_code, local_code] = design_both_ways(cluster, spec);
     EXPECT_EQ(remote_code, local_code);
     ASSERT_GE(local["warnings"].size(), 1u) << local;
     EXPECT_EQ(remote["warnings"], local["warnings"]);
