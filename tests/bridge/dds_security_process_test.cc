@@ -20,7 +20,7 @@ std::unique_ptr<Process> arrivals(const std::string &dir, const std::string &rep
                                   std::vector<std::string> env, const std::string &log) {
     return std::make_unique<Process>(
         std::vector<std::string>{BIN + "/envdesign-arrivals", "--replay", replay, "--problem",
-                                 "restaurant", "--domain", "66", "--rate", "2000", "--wait-bridge",
+                                 "restaurant", "--domain", "69", "--rate", "2000", "--wait-bridge",
                                  "4"},
         env, dir + "/" + log);
 }
@@ -32,9 +32,9 @@ TEST(DdsSecurity, OnlyPublishersWithACertificateReachTheBridge) {
                            " bridge arrivals >/dev/null")
                               .c_str()),
               0);
-    Listener lcm(lcm_url(7766));
+    Listener lcm(lcm_url(7769));
     Process bridge({BIN + "/envdesign-bridge", "--problem", "restaurant=" + DRIFT_SPEC, "--domain",
-                    "66", "--lcm-url", lcm_url(7766), "--name", "bridge/test", "--publish-hz", "50",
+                    "69", "--lcm-url", lcm_url(7769), "--name", "bridge/test", "--publish-hz", "50",
                     "--estimator", "window:100"},
                    secure_env(pki, "bridge"), dir + "/bridge.log");
     std::string replay = write_replay(dir + "/mix.csv", "task", booth_mix(150, 9));

@@ -25,7 +25,9 @@ inline std::vector<std::string> dds_env() {
     return {"CYCLONEDDS_URI=file://" + SOURCE + "/deploy/cyclonedds-loopback.xml"};
 }
 
-// Tests isolate LCM by port (PLATFORM.md §3) and DDS by domain id.
+// Tests isolate LCM by port (PLATFORM.md §3) and DDS by domain id. ctest runs the tests of
+// this folder in parallel, so each test has its own pair, 77NN and NN, unique in tests/
+// (two tests once shared 7766/66 and 7779/79, and failed now and then under load).
 inline std::string lcm_url(int port) {
     return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
 }

@@ -16,16 +16,16 @@ using namespace std::chrono_literals;
 // "restaurant" says exactly 0.9 / 0.1, from 100 samples; in text, one line a message.
 TEST(WatchBridge, PrintsTheDistributionEstimates) {
     std::string dir = scratch("watch");
-    auto bridge = start_bridge(dir, 79, 7779, {"--estimator", "window:100"});
+    auto bridge = start_bridge(dir, 80, 7780, {"--estimator", "window:100"});
     std::string out = dir + "/watch.out", text_out = dir + "/watch.txt";
     Process json_watch({"/bin/bash", "-c",
                         "exec " + BIN +
                             "/envdesign watch --json --status --seconds 60 --lcm-url '" +
-                            lcm_url(7779) + "' > " + out},
+                            lcm_url(7780) + "' > " + out},
                        dir + "/watch.log");
     Process text_watch({"/bin/bash", "-c",
                         "exec " + BIN + "/envdesign watch --status --seconds 60 --lcm-url '" +
-                            lcm_url(7779) + "' > " + text_out},
+                            lcm_url(7780) + "' > " + text_out},
                        dir + "/watch-text.log");
     // Both listen once they print the bridge's status (1/s), before any arrival is sent.
     for (const auto &file : {out, text_out}) {
@@ -40,7 +40,7 @@ TEST(WatchBridge, PrintsTheDistributionEstimates) {
         ASSERT_TRUE(listening) << file << "\n" << bridge->output();
     }
     std::string replay = write_replay(dir + "/mix.csv", "task", booth_mix(100, 9));
-    publish(dir, replay, 79, {"--rate", "2000"});
+    publish(dir, replay, 80, {"--rate", "2000"});
     // The bridge publishes each estimate at once (--publish-hz 50) and once a second idle.
     std::this_thread::sleep_for(2500ms);
     json_watch.signal(SIGINT);
