@@ -81,8 +81,7 @@ int send_unix(const std::string &path, std::uint32_t count) {
     to.sun_family = AF_UNIX;
     std::strncpy(to.sun_path, path.c_str(), sizeof to.sun_path - 1);
     for (std::uint32_t i = 0; i < count; ++i) {
-        if (sendto(fd, &i, sizeof i, 0, reinterpret_cast<sockaddr *>(&to), sizeof to) !=
-            sizeof i) {
+        if (sendto(fd, &i, sizeof i, 0, reinterpret_cast<sockaddr *>(&to), sizeof to) != sizeof i) {
             std::perror("udp_sender: sendto");
             return 1;
         }
@@ -96,8 +95,8 @@ int send_unix(const std::string &path, std::uint32_t count) {
 
 int main(int argc, char **argv) {
     if ((argc == 5 || argc == 6) && std::string(argv[1]) == "udp") {
-        int code = send_udp(std::stoi(argv[2]), static_cast<std::uint32_t>(std::stoul(argv[3])),
-                            argv[4]);
+        int code =
+            send_udp(std::stoi(argv[2]), static_cast<std::uint32_t>(std::stoul(argv[3])), argv[4]);
         if (argc == 6)
             usleep(static_cast<useconds_t>(std::stoi(argv[5])) * 1000);
         return code;

@@ -12,10 +12,11 @@
 // seed and the same sends give the same faults). Loss: the datagram is not sent (the call
 // still reports it sent, as a lossy wire would). Duplication: it is sent twice in a row.
 // Reordering: it is held back and sent right after the process's next datagram, or after
-// ENVDESIGN_SHIM_HOLD_MS (5) if none follows, or when the program exits. ENVDESIGN_SHIM_COUNTS names a file ("%p": the
-// pid) that holds the counts as one line of text, kept in a shared mapping so that it is
-// current even after a SIGKILL. A bad value stops the process at start with exit code 2 and
-// the variable's name.
+// ENVDESIGN_SHIM_HOLD_MS (5) if none follows, or when the program exits.
+//
+// ENVDESIGN_SHIM_COUNTS names a file ("%p": the pid) that holds the counts as one line of
+// text, kept in a shared mapping so that it is current even after a SIGKILL. A bad value
+// stops the process at start with exit code 2 and the variable's name.
 
 #include <dlfcn.h>
 #include <fcntl.h>
@@ -103,11 +104,13 @@ bool chance(double p) { return p > 0 && static_cast<double>(splitmix64() >> 11) 
 void write_counts() {
     if (!g_counts_map)
         return;
-    std::snprintf(g_counts_map, COUNTS_BYTES,
-                  "datagrams=%012llu dropped=%012llu duplicated=%012llu reordered=%012llu "
-                  "delayed=%012llu\n",
-                  g_counts.datagrams, g_counts.dropped, g_counts.duplicated, g_counts.reordered,
-                  g_counts.delayed);
+    char line[COUNTS_BYTES];
+    int n = std::snprintf(line, sizeof line,
+                          "datagrams=%012llu dropped=%012llu duplicated=%012llu "
+                          "reordered=%012llu delayed=%012llu\n",
+                          g_counts.datagrams, g_counts.dropped, g_counts.duplicated,
+                          g_counts.reordered, g_counts.delayed);
+    std::memcpy(g_counts_map, line, static_cast<size_t>(n)); // no NUL: the rest stays blank
 }
 
 void map_counts(const char *pattern) {

@@ -36,7 +36,9 @@ constexpr std::uint32_t N = 2000;
 struct Received {
     std::vector<std::uint32_t> order;
     std::vector<std::chrono::steady_clock::time_point> at; // when each arrived
-    std::size_t unique() const { return std::set<std::uint32_t>(order.begin(), order.end()).size(); }
+    std::size_t unique() const {
+        return std::set<std::uint32_t>(order.begin(), order.end()).size();
+    }
     std::size_t duplicates() const { return order.size() - unique(); }
     // First arrivals of a number smaller than one that arrived before it.
     std::size_t overtaken() const {
@@ -88,8 +90,9 @@ protected:
         EXPECT_EQ(bind(fd, reinterpret_cast<sockaddr *>(&at), sizeof at), 0);
         socklen_t size = sizeof at;
         getsockname(fd, reinterpret_cast<sockaddr *>(&at), &size);
-        Received got = receive(fd, {SENDER, "udp", std::to_string(ntohs(at.sin_port)),
-                                    std::to_string(count), call, linger_ms},
+        Received got = receive(fd,
+                               {SENDER, "udp", std::to_string(ntohs(at.sin_port)),
+                                std::to_string(count), call, linger_ms},
                                env);
         close(fd);
         return got;
@@ -186,8 +189,8 @@ TEST_F(UdpShimTest, ReorderingSendsAHeldDatagramAfterTheNextOne) {
 // goes out when its hold time has passed (the sender stays 2 s more), or at the sender's exit.
 TEST_F(UdpShimTest, AHeldDatagramWithNothingAfterItGoesOutAfterTheHoldTime) {
     const std::vector<std::uint32_t> swapped = {1, 0, 3, 2, 5, 4, 7, 6, 9, 8, 10};
-    Received got = run({"ENVDESIGN_SHIM_REORDER=100", "ENVDESIGN_SHIM_HOLD_MS=20"}, "sendto", 11,
-                       "2000");
+    Received got =
+        run({"ENVDESIGN_SHIM_REORDER=100", "ENVDESIGN_SHIM_HOLD_MS=20"}, "sendto", 11, "2000");
     ASSERT_EQ(got.order, swapped);
     EXPECT_LT(got.at.back() - got.at[9], 1s) << "not sent until the sender exited";
     auto counts = read_counts(counts_file());
@@ -237,8 +240,7 @@ TEST_F(UdpShimTest, UnixDatagramSocketsPassThrough) {
 
 TEST_F(UdpShimTest, ABadRateStopsTheProcessNamingTheVariable) {
     Process sender({SENDER, "udp", "9", "1", "sendto"},
-                   {"LD_PRELOAD=" + SHIM, "ENVDESIGN_SHIM_LOSS=five"},
-                   (dir / "bad.log").string());
+                   {"LD_PRELOAD=" + SHIM, "ENVDESIGN_SHIM_LOSS=five"}, (dir / "bad.log").string());
     EXPECT_EQ(sender.wait(10s), std::optional<int>(2));
     EXPECT_NE(sender.output().find("udp_shim: ENVDESIGN_SHIM_LOSS=five: expected a percentage"),
               std::string::npos)
