@@ -95,7 +95,7 @@ class Watch:
         return sum(self.done.values())
 
     def bridge_design(self):
-        """The bridge's design in force, its objective and its D, as it publishes them."""
+        """The bridge's design in force, its objective and its D, as it last published them."""
         e = self.estimate
         return {"design": list(e.design), "objective": round(e.objective, 9),
                 "reference": dict(zip(e.tasks, (round(p, 9) for p in e.reference)))}
@@ -206,17 +206,17 @@ class Run:
         with open(out.name) as f:
             return json.load(f)
 
-    def bridge_design(self):
-        """The bridge's design once it is for the arrivals' D and nothing is pending."""
-        e = lambda: self.watch.estimate  # noqa: E731
-        self.watch.until(lambda: e() is not None and e().state == 0 and
-                         all_serve_g2(e().tasks, e().reference), 60,
-                         "the bridge's design for the arrivals' D")
+    def wait_bridge_design(self):
+        """Waits for the bridge's design it is for the arrivals' D and nothing is pending."""
+        def settled():
+            e = self.watch.estimate
+            return e is not None and e.state == 0 and all_serve_g2(e.tasks, e.reference)
+        self.watch.until(settled, 60, "the bridge's design for the arrivals' D")
 
     def bridge_final(self):
         """The bridge's design, and whether every arrival published reached it, once the
         publisher is stopped."""
-        self.bridge_design()
+        self.wait_bridge_design()
         self.arrivals.send_signal(signal.SIGTERM)
         self.watch.until(lambda: self.arrivals.poll() is not None, 30, "the publisher's end")
         published = re.search(r"published (\d+) arrivals", self.log("arrivals"))
@@ -264,7 +264,7 @@ def disturbed(run, jobs):
             "planner-2's heartbeats after the cable was plugged back")
     # The bridge's re-design (through this coordinator) is done before the kill, so every
     # job the restarted coordinator sends is the client's.
-    run.bridge_design()
+    run.wait_bridge_design()
     w.until(lambda: w.jobs_done() >= 0.5 * jobs, 120, "half the search's jobs")
     if run.client.poll() is not None:
         raise Failed("the search ended before the kill: use a longer spec")
@@ -324,18 +324,25 @@ def check(a, b):
 def markdown(args, a, b, checks):
     ra, rb, shim = a["result"], b["result"], b["shim"]
     spec = os.path.relpath(args.spec, ROOT)
+
+    def design(names):
+        return "{" + ", ".join(names) + "}"
+
+    def bridge(run):
+        return f"{design(run['bridge']['design'])} ({run['bridge']['objective']:.4f})"
+
     return "\n".join([
         f"Spec `{spec}` (client), `{os.path.relpath(DRIFT_SPEC, ROOT)}` (bridge; arrivals "
         f"of serve-g2 at {ARRIVAL_RATE}/s: {a['arrivals']['published']} undisturbed, "
-        f"{b['arrivals']['published']} disturbed); seed {args.seed}.", "",
-        "| run | client design | objective | jobs sent | re-sent | planner jobs | "
+        f"{b['arrivals']['published']} disturbed, all estimated); seed {args.seed}.", "",
+        "| run | client design | objective | jobs sent | re-sent | planner jobs (all) | "
         "s to result | bridge design (objective) |", "|---|---|---|---|---|---|---|---|",
-        f"| undisturbed | {ra['design']} | {ra['objective']} | {ra['cluster']['jobs_sent']} | "
-        f"{ra['cluster']['jobs_resent']} | {a['planner_jobs']} | {a['seconds']:.1f} | "
-        f"{a['bridge']['design']} ({a['bridge']['objective']}) |",
-        f"| disturbed | {rb['design']} | {rb['objective']} | {rb['cluster']['jobs_sent']} "
-        f"(after the restart) | {rb['cluster']['jobs_resent']} | {b['planner_jobs']} | "
-        f"{b['seconds']:.1f} | {b['bridge']['design']} ({b['bridge']['objective']}) |", "",
+        f"| undisturbed | {design(ra['design'])} | {ra['objective']:.6f} | "
+        f"{ra['cluster']['jobs_sent']} | {ra['cluster']['jobs_resent']} | {a['planner_jobs']} "
+        f"| {a['seconds']:.1f} | {bridge(a)} |",
+        f"| disturbed | {design(rb['design'])} | {rb['objective']:.6f} | "
+        f"{rb['cluster']['jobs_sent']} (after the restart) | {rb['cluster']['jobs_resent']} | "
+        f"{b['planner_jobs']} | {b['seconds']:.1f} | {bridge(b)} |", "",
         f"Disturbed: coordinator SIGKILLed at {b['killed_at']:.1f} s with "
         f"{b['killed_done']} planner jobs done and {b['stored_at_kill']} evaluations stored; "
         f"the restarted one added {b['stored'] - b['stored_at_kill']} records; evaluations "
