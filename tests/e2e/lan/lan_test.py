@@ -35,7 +35,6 @@ import lan_site
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 HOSTS = ["observer", "coordinator", "planner-1", "planner-2", "bridge", "arrivals", "client"]
-SHIMMED = HOSTS[1:]
 PORT, DOMAIN = 7711, 11
 DRIFT_SPEC = os.path.join(ROOT, "tests/arrivals/data/restaurant-drift.textproto")
 ARRIVAL_RATE = 25
