@@ -141,7 +141,8 @@ class Run:
 
     def env(self, host):
         env = dict(os.environ, CYCLONEDDS_URI=f"file://{self.args.cyclone}")
-        env.pop("LCM_DEFAULT_URL", None)
+        for inherited in ("LCM_DEFAULT_URL", "ENVDESIGN_KEY_FILE", "LD_PRELOAD"):
+            env.pop(inherited, None)  # the site's URL, no keys, faults only when asked
         if self.faults:
             env.update(FAULTS, LD_PRELOAD=self.args.shim,
                        ENVDESIGN_SHIM_SEED=str(self.seeds[host]),
