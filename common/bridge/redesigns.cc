@@ -171,6 +171,10 @@ void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Reques
     {
         std::lock_guard lock(mutex_);
         m.spec = with_distribution(specs_.at(request.problem_id), request.estimate, good);
+        // The bridge asks again only after giving up on the last request (--answer-timeout):
+        // a late answer to that one must not replace the design for this newer D.
+        std::erase_if(pending_,
+                      [&](const auto &p) { return p.second.problem_id == request.problem_id; });
         pending_[request_id] = {request.problem_id, m.spec};
     }
     m.utime = bus::now_utime();
@@ -188,9 +192,15 @@ void CoordinatorRedesigns::on_result(const envdesign::design_result_t &result) {
     Answer answer;
     {
         std::lock_guard lock(mutex_);
+        if (result.client != instance_)
+            return; // another client's
         auto it = pending_.find(result.request_id);
-        if (result.client != instance_ || it == pending_.end())
-            return; // another client's, or a repeat of one answered
+        if (it == pending_.end()) {
+            bus_.log().info("request {} | answer ignored: the request was answered before or "
+                            "asked again since",
+                            bus::request_name(instance_, result.request_id));
+            return;
+        }
         Pending pending = std::move(it->second);
         pending_.erase(it);
         const std::string &id = pending.problem_id;

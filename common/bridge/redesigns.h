@@ -5,7 +5,9 @@
 //     D is a re-weighting; it publishes the design_result_t on ENVDESIGN_RESULT itself.
 //   - CoordinatorRedesigns (--redesign coordinator): sends the spec with the new D (and the
 //     new tasks) to envdesign-coordinator as a design request on ENVDESIGN_REQUEST and takes
-//     the coordinator's ENVDESIGN_RESULT as the answer.
+//     the coordinator's ENVDESIGN_RESULT as the answer. A request for a problem supersedes
+//     the one still pending for it (the bridge gave up on that one): a late answer to the
+//     older request is ignored, never taken as the design in force.
 // Either way the bridge hears back through `Answered` (from any thread).
 
 #include "bridge/messages.h"

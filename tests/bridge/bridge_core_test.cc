@@ -13,6 +13,7 @@
 #include "design/design_search.h"
 #include "design/design_spec.h"
 #include "design/local_evaluator.h"
+#include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/task_distribution_t.hpp"
 
@@ -307,6 +308,68 @@ TEST(BridgeCore, ANewTaskWithItsProblemIsAddedByARedesign) {
     // The new task is serve-g2 again: its IE and robot cost are serve-g2's.
     EXPECT_EQ(r.tasks[2].ie, r.tasks[1].ie);
     EXPECT_EQ(r.tasks[2].robot_cost, r.tasks[1].robot_cost);
+}
+
+// A coordinator's answer that comes after the bridge gave up on its request and asked again
+// (lost and re-sent, or held by a planner cut off from the network, as in the LAN test) does
+// not replace the newer answer: the design in force stays the one for the newer D. The
+// bridge is on one memq bus, the coordinator and a planner on another; the test carries
+// requests across at once and results when it chooses.
+TEST(BridgeCore, ALateAnswerToARequestAskedAgainIsIgnored) {
+    bus::Bus bridge_bus("memq://", bus::quiet()), cluster_bus("memq://", bus::quiet());
+    std::vector<envdesign::design_result_t> held;
+    std::optional<task_distribution_t> estimate;
+    auto estimates = bridge_bus.subscribe<task_distribution_t>(
+        bus::TASK_DISTRIBUTION, [&](const task_distribution_t &m) { estimate = m; });
+    auto requests = bridge_bus.subscribe<envdesign::design_request_t>(
+        bus::REQUEST,
+        [&](const envdesign::design_request_t &m) { cluster_bus.publish(bus::REQUEST, m); });
+    auto results = cluster_bus.subscribe<envdesign::design_result_t>(
+        bus::RESULT, [&](const envdesign::design_result_t &m) { held.push_back(m); });
+    auto coordinator = coordinator_on(cluster_bus);
+    auto planner = planner_on(cluster_bus);
+    arrivals::ArrivalQueue queue;
+    ManualClock clock{START_UTIME};
+    BridgeConfig c = config(0.3, Mode::COORDINATOR);
+    c.tracker.drift.answer_timeout_s = 5;
+    Bridge bridge(bridge_bus, c, queue, clock);
+    auto run_until = [&](const std::function<bool()> &done, int rounds = 3000) {
+        for (int round = 0; round < rounds && !done(); ++round) {
+            bridge_bus.handle(std::chrono::milliseconds(2));
+            cluster_bus.handle(std::chrono::milliseconds(2));
+            coordinator->tick();
+            planner->tick();
+            bridge.tick();
+        }
+        bus::drain(bridge_bus);
+        return done();
+    };
+
+    // The answer to the initial request (the spec's D: no design) is held back.
+    ASSERT_TRUE(run_until([&] { return held.size() == 1; }));
+    clock.advance(6); // the bridge gives up on it at the next arrival, and asks for the new D
+    for (std::int64_t i = 1; i <= 10; ++i)
+        queue.push({"restaurant", "dock-1", "serve-g2", i, clock.utime(), "", ""});
+    bridge.pump(0);
+    ASSERT_TRUE(run_until([&] { return held.size() == 2; }));
+    ASSERT_GT(held[1].request_id, held[0].request_id);
+    Optimum all_g2 = exhaustive(0), at_09 = exhaustive(0.9);
+    EXPECT_EQ(held[0].design, at_09.design);
+    EXPECT_EQ(held[1].design, all_g2.design);
+    ASSERT_NE(all_g2.design, at_09.design);
+
+    bridge_bus.publish(bus::RESULT, held[1]);
+    ASSERT_TRUE(run_until([&] { return bridge.stats().answers == 1; }));
+    EXPECT_EQ(bridge.design("restaurant").design, all_g2.design);
+    bridge_bus.publish(bus::RESULT, held[0]); // the late one
+    clock.advance(1);
+    run_until([&] { return false; }, 100); // time for it to be taken, if it were
+    EXPECT_EQ(bridge.stats().answers, 1);
+    EXPECT_EQ(bridge.design("restaurant").design, all_g2.design);
+    ASSERT_TRUE(estimate);
+    EXPECT_EQ(estimate->design, all_g2.design);
+    EXPECT_NEAR(estimate->objective, all_g2.objective, 1e-9);
+    EXPECT_EQ(estimate->state, task_distribution_t::STATE_ARMED);
 }
 
 } // namespace

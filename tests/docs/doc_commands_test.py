@@ -43,6 +43,8 @@ ELSEWHERE = [
     ("CC=clang CXX=clang++ cmake", "a second compiler's full build: not CI"),
     ("bash tests/fuzz/", "fuzzing (minutes per target); ctest replays the corpora"),
     ("ctest --test-dir build", "CI: .ci/run"),
+    ("python3 tests/e2e/lan/lan_test.py", "lan.SiteSurvivesLossPartitionAndCoordinatorKill "
+                                          "(ctest -L lan; needs root)"),
     ("python3 tests/benchmarks/", "benchmark command (minutes), not CI; results in docs/results"),
     ("ENVDESIGN_AGREEMENT_SEEDS=3000", "benchmark run; ctest runs WitnessAgreement with 40 seeds"),
     ("build/bin/cluster_benchmark", "benchmark command (~1 min), not CI"),
