@@ -46,6 +46,8 @@ ELSEWHERE = [
     ("python3 tests/e2e/lan/lan_test.py", "lan.SiteSurvivesLossPartitionAndCoordinatorKill "
                                           "(ctest -L lan; needs root)"),
     ("python3 tests/benchmarks/", "benchmark command (minutes), not CI; results in docs/results"),
+    ("bash tests/benchmarks/", "benchmark or picture command (needs tools deploy/install-deps.sh "
+                               "does not install, or minutes), not CI; results in docs/results"),
     ("ENVDESIGN_AGREEMENT_SEEDS=3000", "benchmark run; ctest runs WitnessAgreement with 40 seeds"),
     ("build/bin/cluster_benchmark", "benchmark command (~1 min), not CI"),
     ("build/bin/bridge_benchmark", "benchmark command (~15 s), not CI"),
