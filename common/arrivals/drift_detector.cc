@@ -6,13 +6,18 @@ DriftDetector::DriftDetector(DriftConfig config, Distribution reference)
     : config_(config), reference_(std::move(reference)) {}
 
 bool DriftDetector::observe(const Distribution &estimate, double samples, double now) {
-    last_tv_ = total_variation(reference_, estimate);
     ++arrivals_since_request_;
+    return recheck(estimate, samples, now);
+}
+
+bool DriftDetector::recheck(const Distribution &estimate, double samples, double now) {
+    last_tv_ = total_variation(reference_, estimate);
     if (state_ == DriftState::PENDING) {
         if (now - requested_at_ < config_.answer_timeout_s)
             return false;
         ++timeouts_;
         state_ = DriftState::ARMED;
+        requested_before_ = false; // no answer came: the hold-off after it does not apply
     }
     if (state_ == DriftState::HELD && last_tv_ < config_.rearm_threshold)
         state_ = DriftState::ARMED;

@@ -7,7 +7,8 @@
 //   PENDING  --answered(D'), D' is the D requested-->                ARMED
 //   PENDING  --answered(D'), TV(D', estimate) <  rearm_threshold-->  ARMED
 //   PENDING  --answered(D'), otherwise-->                            HELD
-//   PENDING  --no answer for answer_timeout_s-->                     ARMED (a timeout)
+//   PENDING  --no answer for answer_timeout_s-->                     ARMED (a timeout; seen
+//                                    at an arrival or on the clock; no hold-off after it)
 //   HELD     --TV < rearm_threshold-->                               ARMED
 //   HELD     --TV >= threshold and retry_s since the request-->      PENDING (a retry)
 //
@@ -49,6 +50,9 @@ public:
     // Called after every accepted arrival with the new estimate, its effective sample size
     // and the time (seconds on a monotonic clock). True: send a re-evaluation request now.
     bool observe(const Distribution &estimate, double samples, double now);
+    // The same check on the clock, with no new arrival: a request or its answer lost after
+    // the last arrival must still time out (PENDING -> ARMED) and a HELD retry fall due.
+    bool recheck(const Distribution &estimate, double samples, double now);
 
     // A request for `requested` whatever the distance (a new task must be evaluated, or the
     // first design made): true unless one is already PENDING.

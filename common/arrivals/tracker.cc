@@ -123,6 +123,7 @@ std::optional<Request> ArrivalTracker::answered(const std::string &id,
     if (it == problems_.end())
         return std::nullopt;
     Problem &p = it->second;
+    p.designed = true;
     p.tasks.clear();
     for (const auto &[task, probability] : reference)
         p.tasks.insert(task);
@@ -142,6 +143,19 @@ std::optional<Request> ArrivalTracker::answered(const std::string &id,
     if (p.proposed.empty() || !p.detector.force(now, estimate))
         return std::nullopt;
     return make_request(p, Reason::NEW_TASK);
+}
+
+std::vector<Request> ArrivalTracker::requests_due(double now) {
+    std::vector<Request> due;
+    for (auto &[id, p] : problems_) {
+        bool was_pending = p.detector.state() == DriftState::PENDING;
+        Distribution estimate = p.estimator.estimate();
+        if (p.detector.recheck(estimate, p.estimator.effective_samples(), now))
+            due.push_back(make_request(p, Reason::DRIFT));
+        else if (was_pending && !p.designed && p.detector.state() != DriftState::PENDING)
+            due.push_back(initial_request(id, now));
+    }
+    return due;
 }
 
 std::vector<Request> ArrivalTracker::reweighs_due(double now) {

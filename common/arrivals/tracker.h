@@ -128,6 +128,11 @@ public:
     std::optional<Request> answered(const std::string &id, const Distribution &reference,
                                     double now);
 
+    // Requests that fall due on the clock alone (called periodically, arrivals or not): a
+    // request unanswered for answer_timeout_s times out, and is asked again at once if it
+    // was the INITIAL one (no design yet) or the estimate has drifted; HELD retries.
+    std::vector<Request> requests_due(double now);
+
     // Problems whose estimate changed since their last re-weighting, at most one request per
     // problem and reweigh_interval_s; none while a request of theirs is pending or new tasks
     // wait (the redesign for those comes first). The requests' D is the estimate.
@@ -153,6 +158,7 @@ private:
         ProblemStatus status;
         long long reweighed_estimated = 0; // status.estimated at the last re-weighting
         double reweighed_at = -1e300;
+        bool designed = false; // a design was answered for it
     };
 
     Use classify(Problem &p, const Arrival &arrival, bool &first_of_name);

@@ -68,6 +68,9 @@ Bridge::Bridge(bus::Bus &bus, BridgeConfig config, arrivals::ArrivalSource &sour
                                                           answered);
     results_.emplace(bus_.subscribe<envdesign::design_result_t>(
         bus::RESULT, [this](const envdesign::design_result_t &r) { backend_->on_result(r); }));
+    progress_.emplace(bus_.subscribe<envdesign::design_progress_t>(
+        bus::PROGRESS,
+        [this](const envdesign::design_progress_t &p) { backend_->on_progress(p); }));
     {
         std::lock_guard lock(mutex_);
         for (const auto &source : config_.problems)
@@ -250,6 +253,9 @@ void Bridge::on_answer(Answer answer) {
 void Bridge::tick() {
     std::lock_guard lock(mutex_);
     double t = now();
+    for (const auto &request : tracker_.requests_due(t))
+        send(request);
+    backend_->tick(t);
     reweigh(t); // the last arrivals of a burst, held back by the rate limit
     for (const auto &[id, published] : problems_)
         publish_estimate(id, t, false);

@@ -124,7 +124,8 @@ private:
     std::unique_ptr<RedesignBackend> backend_;
     LocalRedesigns *local_ = nullptr;          // backend_ in Mode::LOCAL: it can re-weigh
     std::optional<bus::Subscription> results_; // optional: bus.h's default constructor
-                                               // needs a type only bus.cc sees
+    std::optional<bus::Subscription> progress_;
+    // needs a type only bus.cc sees
     std::atomic<bool> stopping_{false};
     std::thread reader_thread_; // last: starts once everything else exists
 };

@@ -23,6 +23,8 @@ constexpr double NOT_KNOWN = std::numeric_limits<double>::quiet_NaN();
 RedesignBackend::~RedesignBackend() = default;
 
 void RedesignBackend::on_result(const envdesign::design_result_t &) {}
+void RedesignBackend::on_progress(const envdesign::design_progress_t &) {}
+void RedesignBackend::tick(double) {}
 
 LocalRedesigns::LocalRedesigns(bus::Bus &bus, std::string instance,
                                std::map<std::string, design::DesignProblem> problems,
@@ -168,16 +170,6 @@ void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Reques
                             bus::request_name(instance_, request_id), request.problem_id, e.what());
         }
     }
-    {
-        std::lock_guard lock(mutex_);
-        m.spec = with_distribution(specs_.at(request.problem_id), request.estimate, good);
-        // The bridge asks again only after giving up on the last request (--answer-timeout):
-        // a late answer to that one must not replace the design for this newer D.
-        std::erase_if(pending_,
-                      [&](const auto &p) { return p.second.problem_id == request.problem_id; });
-        pending_[request_id] = {request.problem_id, m.spec};
-    }
-    m.utime = bus::now_utime();
     m.request_id = request_id;
     m.sender = instance_;
     m.time_limit_s = options_.time_limit_s;
@@ -185,7 +177,43 @@ void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Reques
     m.prune = envdesign::design_request_t::PRUNE_NONE;
     m.heuristic = options_.heuristic;
     m.reason = arrivals::describe(request);
+    m.utime = bus::now_utime();
+    {
+        std::lock_guard lock(mutex_);
+        m.spec = with_distribution(specs_.at(request.problem_id), request.estimate, good);
+        // The bridge asks again only after giving up on the last request (--answer-timeout):
+        // a late answer to that one must not replace the design for this newer D.
+        std::erase_if(pending_,
+                      [&](const auto &p) { return p.second.problem_id == request.problem_id; });
+        pending_[request_id] = {request.problem_id, m, now_s_};
+    }
     bus_.publish(bus::REQUEST, m);
+}
+
+void CoordinatorRedesigns::on_progress(const envdesign::design_progress_t &progress) {
+    std::lock_guard lock(mutex_);
+    if (auto it = pending_.find(progress.request_id);
+        progress.client == instance_ && it != pending_.end())
+        it->second.heard_at = now_s_;
+}
+
+void CoordinatorRedesigns::tick(double now_s) {
+    std::vector<envdesign::design_request_t> again;
+    {
+        std::lock_guard lock(mutex_);
+        now_s_ = now_s;
+        for (auto &[id, pending] : pending_)
+            if (now_s - pending.heard_at >= options_.resend_after_s) {
+                pending.heard_at = now_s;
+                pending.request.utime = bus::now_utime();
+                again.push_back(pending.request);
+            }
+    }
+    for (const auto &request : again) {
+        bus_.publish(bus::REQUEST, request);
+        bus_.log().info("request {} | no word from a coordinator in {:g} s: sent again",
+                        bus::request_name(instance_, request.request_id), options_.resend_after_s);
+    }
 }
 
 void CoordinatorRedesigns::on_result(const envdesign::design_result_t &result) {
@@ -212,7 +240,7 @@ void CoordinatorRedesigns::on_result(const envdesign::design_result_t &result) {
                                  "): " + result.error,
                              result.request_id};
         } else {
-            specs_[id] = pending.spec; // the new tasks are the problem's now
+            specs_[id] = pending.request.spec; // the new tasks are the problem's now
             answer.reference = references_[id] = distribution_of(result);
             bool first = answered_once_.insert(id).second;
             std::string what = cluster::design_change(first ? nullptr : &before, result);

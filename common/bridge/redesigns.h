@@ -14,6 +14,8 @@
 
 #include "arrivals/redesign.h"
 #include "bus/bus.h"
+#include "envdesign/design_progress_t.hpp"
+#include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/spec_t.hpp"
 
@@ -50,6 +52,10 @@ public:
     virtual void start(std::int64_t request_id, const arrivals::Request &request) = 0;
     // A design_result_t heard on ENVDESIGN_RESULT (bus thread).
     virtual void on_result(const envdesign::design_result_t &result);
+    // A design_progress_t heard on ENVDESIGN_PROGRESS (bus thread).
+    virtual void on_progress(const envdesign::design_progress_t &progress);
+    // The bridge's clock, seconds, from the bus thread a few times a second.
+    virtual void tick(double now_s);
 };
 
 class LocalRedesigns : public RedesignBackend {
@@ -90,6 +96,11 @@ private:
 struct CoordinatorRequestOptions {
     std::int8_t heuristic = 0; // design_request_t::HEURISTIC_*
     double time_limit_s = -1;  // < 0: the spec's
+    // A pending request the coordinator has said nothing about (no progress, no result) for
+    // this long is sent again, as the client does: the request, or all that the coordinator
+    // said, was lost (or no coordinator listened yet). The coordinator answers a repeat
+    // with its progress or its result, never with a second search.
+    double resend_after_s = 3;
 };
 
 class CoordinatorRedesigns : public RedesignBackend {
@@ -104,11 +115,14 @@ public:
 
     void start(std::int64_t request_id, const arrivals::Request &request) override;
     void on_result(const envdesign::design_result_t &result) override;
+    void on_progress(const envdesign::design_progress_t &progress) override;
+    void tick(double now_s) override;
 
 private:
     struct Pending {
         std::string problem_id;
-        envdesign::spec_t spec; // as sent: new tasks in it
+        envdesign::design_request_t request; // as sent: its spec has the new tasks
+        double heard_at = 0;                 // sent, or the coordinator said something of it
     };
 
     bus::Bus &bus_;
@@ -122,6 +136,7 @@ private:
     std::map<std::string, arrivals::Distribution> references_; // its D
     std::map<std::int64_t, Pending> pending_;
     std::set<std::string> answered_once_; // problems with a design
+    double now_s_ = 0;                    // the last tick's
 };
 
 } // namespace envdesign::bridge

@@ -51,6 +51,10 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
         ->capture_default_str();
     app.add_option("--answer-timeout", drift.answer_timeout_s, "seconds to wait for a design")
         ->capture_default_str();
+    app.add_option("--resend-after", c.coordinator.resend_after_s,
+                   "coordinator: send a request again after this long without word of it (s)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     app.add_option("--max-rate", intake.max_rate, "arrivals/s per site (0: no limit)")
         ->capture_default_str();
     app.add_option("--burst", intake.burst, "burst allowed above --max-rate")

@@ -91,6 +91,19 @@ TEST(DriftDetector, TimeoutAsksAgain) {
     EXPECT_EQ(d.requests(), 2);
 }
 
+// The same timeout on the clock alone, with no arrival: recheck() times the request out
+// and asks again for the drifted estimate (an answer lost after the last arrival).
+TEST(DriftDetector, RecheckTimesOutWithoutArrivals) {
+    DriftDetector d(config(), ab(0.9));
+    ASSERT_TRUE(d.observe(ab(0.6), 100, 0));
+    EXPECT_FALSE(d.observe(ab(0.6), 100, 1)); // within the hold-off (5): the timeout waives it
+    EXPECT_FALSE(d.recheck(ab(0.6), 100, 59.9));
+    EXPECT_EQ(d.state(), DriftState::PENDING);
+    EXPECT_TRUE(d.recheck(ab(0.6), 100, 60));
+    EXPECT_EQ(d.timeouts(), 1);
+    EXPECT_EQ(d.requests(), 2);
+}
+
 // An answer for an older D leaves the estimate 0.3 away: HELD, asks again only after
 // retry_s (30 s since the request), not at every arrival.
 TEST(DriftDetector, StaleAnswerHoldsThenRetries) {

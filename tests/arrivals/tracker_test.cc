@@ -47,6 +47,23 @@ TEST(Tracker, EstimatesPerProblem) {
     EXPECT_FALSE(tracker.status("q"));
 }
 
+// An initial request never answered is asked again on the clock (answer_timeout_s 120),
+// with no arrival; once a design is answered, the clock alone asks for nothing.
+TEST(Tracker, AnUnansweredInitialRequestIsAskedAgainOnTheClock) {
+    ArrivalTracker tracker(config());
+    tracker.add_problem("p", {{"a", 0.5}, {"b", 0.5}});
+    tracker.initial_request("p", 0);
+    EXPECT_TRUE(tracker.requests_due(119).empty());
+    auto due = tracker.requests_due(120);
+    ASSERT_EQ(due.size(), 1u);
+    EXPECT_EQ(due[0].reason, Reason::INITIAL);
+    EXPECT_EQ(due[0].estimate, (Distribution{{"a", 0.5}, {"b", 0.5}}));
+    EXPECT_EQ(tracker.status("p")->timeouts, 1);
+    EXPECT_TRUE(tracker.requests_due(200).empty()); // pending again
+    tracker.answered("p", {{"a", 0.5}, {"b", 0.5}}, 210);
+    EXPECT_TRUE(tracker.requests_due(1000).empty());
+}
+
 TEST(Tracker, UnknownProblemAndUnknownTask) {
     ArrivalTracker tracker(config());
     tracker.add_problem("p", {{"a", 1}});

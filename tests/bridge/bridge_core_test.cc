@@ -310,66 +310,149 @@ TEST(BridgeCore, ANewTaskWithItsProblemIsAddedByARedesign) {
     EXPECT_EQ(r.tasks[2].robot_cost, r.tasks[1].robot_cost);
 }
 
-// A coordinator's answer that comes after the bridge gave up on its request and asked again
-// (lost and re-sent, or held by a planner cut off from the network, as in the LAN test) does
-// not replace the newer answer: the design in force stays the one for the newer D. The
-// bridge is on one memq bus, the coordinator and a planner on another; the test carries
-// requests across at once and results when it chooses.
-TEST(BridgeCore, ALateAnswerToARequestAskedAgainIsIgnored) {
-    bus::Bus bridge_bus("memq://", bus::quiet()), cluster_bus("memq://", bus::quiet());
-    std::vector<envdesign::design_result_t> held;
-    std::optional<task_distribution_t> estimate;
-    auto estimates = bridge_bus.subscribe<task_distribution_t>(
-        bus::TASK_DISTRIBUTION, [&](const task_distribution_t &m) { estimate = m; });
-    auto requests = bridge_bus.subscribe<envdesign::design_request_t>(
-        bus::REQUEST,
-        [&](const envdesign::design_request_t &m) { cluster_bus.publish(bus::REQUEST, m); });
-    auto results = cluster_bus.subscribe<envdesign::design_result_t>(
-        bus::RESULT, [&](const envdesign::design_result_t &m) { held.push_back(m); });
-    auto coordinator = coordinator_on(cluster_bus);
-    auto planner = planner_on(cluster_bus);
-    arrivals::ArrivalQueue queue;
-    ManualClock clock{START_UTIME};
-    BridgeConfig c = config(0.3, Mode::COORDINATOR);
-    c.tracker.drift.answer_timeout_s = 5;
-    Bridge bridge(bridge_bus, c, queue, clock);
-    auto run_until = [&](const std::function<bool()> &done, int rounds = 3000) {
+// A bridge asking a coordinator over a lossy link: its requests reach the coordinator (on a
+// bus of its own), and each result comes back only if `deliver` says so; the coordinator's
+// progress never comes back, so the bridge hears silence until a result arrives.
+class LossyLink {
+public:
+    explicit LossyLink(BridgeConfig c)
+        : requests_(bridge_bus_.subscribe<envdesign::design_request_t>(
+              bus::REQUEST,
+              [this](const envdesign::design_request_t &m) {
+                  ++requests_sent;
+                  cluster_bus_.publish(bus::REQUEST, m);
+              })),
+          results_(cluster_bus_.subscribe<envdesign::design_result_t>(
+              bus::RESULT,
+              [this](const envdesign::design_result_t &m) {
+                  answers.push_back(m);
+                  if (deliver(m))
+                      bridge_bus_.publish(bus::RESULT, m);
+              })),
+          coordinator_(coordinator_on(cluster_bus_)), planner_(planner_on(cluster_bus_)),
+          bridge(bridge_bus_, c, queue_, clock) {}
+
+    // Handles both buses and ticks everyone until `done` (false after 3000 rounds).
+    bool run_until(const std::function<bool()> &done, int rounds = 3000) {
         for (int round = 0; round < rounds && !done(); ++round) {
-            bridge_bus.handle(std::chrono::milliseconds(2));
-            cluster_bus.handle(std::chrono::milliseconds(2));
-            coordinator->tick();
-            planner->tick();
+            bridge_bus_.handle(std::chrono::milliseconds(2));
+            cluster_bus_.handle(std::chrono::milliseconds(2));
+            coordinator_->tick();
+            planner_->tick();
             bridge.tick();
         }
-        bus::drain(bridge_bus);
+        bus::drain(bridge_bus_);
         return done();
-    };
+    }
+    void arrive_g2(int count) {
+        for (int i = 0; i < count; ++i)
+            queue_.push({"restaurant", "dock-1", "serve-g2", ++sequence_, clock.utime(), "", ""});
+        bridge.pump(0);
+    }
+    void publish_to_bridge(const envdesign::design_result_t &m) {
+        bridge_bus_.publish(bus::RESULT, m);
+    }
 
-    // The answer to the initial request (the spec's D: no design) is held back.
-    ASSERT_TRUE(run_until([&] { return held.size() == 1; }));
-    clock.advance(6); // the bridge gives up on it at the next arrival, and asks for the new D
-    for (std::int64_t i = 1; i <= 10; ++i)
-        queue.push({"restaurant", "dock-1", "serve-g2", i, clock.utime(), "", ""});
-    bridge.pump(0);
-    ASSERT_TRUE(run_until([&] { return held.size() == 2; }));
+    std::function<bool(const envdesign::design_result_t &)> deliver = [](const auto &) {
+        return true;
+    };
+    std::vector<envdesign::design_result_t> answers; // every result the coordinator sent
+    int requests_sent = 0;                           // by the bridge, repeats included
+    ManualClock clock{START_UTIME};
+
+private:
+    bus::Bus bridge_bus_{"memq://", bus::quiet()}, cluster_bus_{"memq://", bus::quiet()};
+    arrivals::ArrivalQueue queue_;
+    std::int64_t sequence_ = 0;
+    bus::Subscription requests_, results_;
+    std::unique_ptr<cluster::Coordinator> coordinator_;
+    std::unique_ptr<cluster::Planner> planner_;
+
+public:
+    Bridge bridge; // last: it publishes from its constructor on
+};
+
+BridgeConfig lossy_config(double resend_after_s) {
+    BridgeConfig c = config(0.3, Mode::COORDINATOR);
+    c.tracker.drift.answer_timeout_s = 5;
+    c.coordinator.resend_after_s = resend_after_s;
+    return c;
+}
+
+// A request given up (answer_timeout_s) and asked again for the new D: the late answer to
+// the first must not replace the design made for the second.
+TEST(BridgeCore, ALateAnswerToARequestAskedAgainIsIgnored) {
+    LossyLink link(lossy_config(1e6)); // no repeats: only the timeout acts
+    link.deliver = [](const auto &) { return false; };
+    ASSERT_TRUE(link.run_until([&] { return link.answers.size() == 1; })); // initial, held
+    link.clock.advance(6); // the bridge gives up on it at the next arrival, asks for the new D
+    link.arrive_g2(10);
+    ASSERT_TRUE(link.run_until([&] { return link.answers.size() == 2; }));
+    const auto &held = link.answers;
     ASSERT_GT(held[1].request_id, held[0].request_id);
     Optimum all_g2 = exhaustive(0), at_09 = exhaustive(0.9);
     EXPECT_EQ(held[0].design, at_09.design);
     EXPECT_EQ(held[1].design, all_g2.design);
     ASSERT_NE(all_g2.design, at_09.design);
 
-    bridge_bus.publish(bus::RESULT, held[1]);
-    ASSERT_TRUE(run_until([&] { return bridge.stats().answers == 1; }));
-    EXPECT_EQ(bridge.design("restaurant").design, all_g2.design);
-    bridge_bus.publish(bus::RESULT, held[0]); // the late one
-    clock.advance(1);
-    run_until([&] { return false; }, 100); // time for it to be taken, if it were
-    EXPECT_EQ(bridge.stats().answers, 1);
-    EXPECT_EQ(bridge.design("restaurant").design, all_g2.design);
-    ASSERT_TRUE(estimate);
-    EXPECT_EQ(estimate->design, all_g2.design);
-    EXPECT_NEAR(estimate->objective, all_g2.objective, 1e-9);
-    EXPECT_EQ(estimate->state, task_distribution_t::STATE_ARMED);
+    link.publish_to_bridge(held[1]);
+    ASSERT_TRUE(link.run_until([&] { return link.bridge.stats().answers == 1; }));
+    EXPECT_EQ(link.bridge.design("restaurant").design, all_g2.design);
+    link.publish_to_bridge(held[0]); // the late one
+    link.clock.advance(1);
+    link.run_until([&] { return false; }, 100); // time for it to be taken, if it were
+    EXPECT_EQ(link.bridge.stats().answers, 1);
+    EXPECT_EQ(link.bridge.design("restaurant").design, all_g2.design);
+}
+
+// Lost after the last arrival: the initial request's answer, then a drift request's answer.
+// With no arrival to notice it, the clock times each out (answer_timeout_s 5) and asks again.
+TEST(BridgeCore, ARequestLostAfterTheLastArrivalIsAskedAgainOnTheClock) {
+    LossyLink link(lossy_config(1e6)); // no repeats: only the timeout acts
+    bool deliver = false;
+    link.deliver = [&](const auto &) { return deliver; };
+    Optimum all_g2 = exhaustive(0), at_09 = exhaustive(0.9);
+    ASSERT_NE(all_g2.design, at_09.design);
+
+    ASSERT_TRUE(link.run_until([&] { return link.answers.size() == 1; })); // lost
+    deliver = true;
+    link.clock.advance(4);
+    link.run_until([&] { return link.answers.size() == 2; });
+    EXPECT_EQ(link.answers.size(), 1u) << "asked again before the timeout";
+    link.clock.advance(2);
+    ASSERT_TRUE(link.run_until([&] { return link.bridge.stats().answers == 1; }));
+    EXPECT_EQ(link.bridge.design("restaurant").design, at_09.design);
+
+    deliver = false; // drift to all serve-g2; the request it makes is answered, then lost
+    link.arrive_g2(10);
+    ASSERT_TRUE(link.run_until([&] { return link.answers.size() == 3; }));
+    deliver = true;
+    link.clock.advance(6);
+    ASSERT_TRUE(link.run_until([&] { return link.bridge.stats().answers == 2; }));
+    EXPECT_EQ(link.answers.size(), 4u);
+    EXPECT_EQ(link.bridge.design("restaurant").design, all_g2.design);
+}
+
+// Silence for resend_after_s (2): the same request again, long before the answer timeout;
+// the coordinator answers the repeat from what it closed (the same request id, no search).
+TEST(BridgeCore, ARequestTheCoordinatorIsSilentAboutIsSentAgain) {
+    LossyLink link(lossy_config(2));
+    bool deliver = false;
+    link.deliver = [&](const auto &) { return deliver; };
+    ASSERT_TRUE(link.run_until([&] { return link.answers.size() == 1; })); // lost
+    EXPECT_EQ(link.requests_sent, 1);
+    deliver = true;
+    link.clock.advance(1.9);
+    link.run_until([&] { return false; }, 100);
+    EXPECT_EQ(link.requests_sent, 1) << "sent again before 2 s of silence";
+    link.clock.advance(0.2);
+    ASSERT_TRUE(link.run_until([&] { return link.bridge.stats().answers == 1; }));
+    EXPECT_EQ(link.requests_sent, 2);
+    ASSERT_EQ(link.answers.size(), 2u);
+    EXPECT_EQ(link.answers[1].request_id, link.answers[0].request_id);
+    EXPECT_EQ(link.answers[1].counters.planner_runs, link.answers[0].counters.planner_runs);
+    EXPECT_EQ(link.bridge.design("restaurant").design, exhaustive(0.9).design);
+    EXPECT_EQ(link.bridge.stats().requests, 1); // one request, sent twice
 }
 
 } // namespace
