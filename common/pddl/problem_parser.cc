@@ -1,3 +1,4 @@
+#include "pddl/input_file.h"
 #include "pddl/name_scope.h"
 #include "pddl/parser.h"
 
@@ -107,9 +108,14 @@ Problem parse_problem(const SExpr &define, const std::string &file, const Domain
     return problem;
 }
 
+Problem parse_problem_text(const std::string &text, const std::string &name, const Domain &domain,
+                           const std::string &other_domain_name) {
+    return parse_problem(read_sexpr(text, name), name, domain, other_domain_name);
+}
+
 Problem parse_problem_file(const std::string &path, const Domain &domain,
                            const std::string &other_domain_name) {
-    return parse_problem(read_sexpr_file(path), path, domain, other_domain_name);
+    return parse_problem_text(read_input_file(path), path, domain, other_domain_name);
 }
 
 }  // namespace envdesign::pddl

@@ -27,7 +27,4 @@ struct SExpr {
 // Throws ParseError on unbalanced parentheses or trailing content.
 SExpr read_sexpr(const std::string &text, const std::string &file);
 
-// Reads a whole file; throws ParseError naming the file if it cannot be opened.
-SExpr read_sexpr_file(const std::string &path);
-
 }  // namespace envdesign::pddl
