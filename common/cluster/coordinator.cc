@@ -147,7 +147,6 @@ void Coordinator::on_request(const design_request_t &request) {
     RunContext context{bus_,
                        router_,
                        specs_,
-                       config_.work_dir,
                        config_.grace_s,
                        config_.stored_evaluations > 0 ? &stores_ : nullptr};
     open_[name].run = std::make_unique<RequestRun>(context, request);

@@ -2,7 +2,7 @@
 // new predicate, and a modification that changes no ground task.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
+#include "spec/design_spec.h"
 #include "design/local_evaluator.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +10,8 @@
 #include <cmath>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 const std::string SPEC = std::string(ENVDESIGN_EXAMPLES) + "/blocksworld/design.textproto";

@@ -4,7 +4,7 @@
 // with no bound, on seeded generated design problems.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
+#include "spec/design_spec.h"
 #include "design/evaluation_record.h"
 #include "design/explaining.h"
 #include "design/local_evaluator.h"
@@ -21,6 +21,8 @@
 #include <tuple>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 const double H = (1 - std::pow(0.9, 10)) / (1 - 0.9); // discounted horizon, gamma 0.9, T 10
