@@ -6,9 +6,9 @@
 #include "result_format.h"
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/progress.h"
 #include "design/relevance.h"
+#include "spec/design_spec.h"
 
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>

@@ -1,7 +1,7 @@
 #include "design_warnings.h"
 
-#include "spec/design_spec.h"
 #include "design/unsolvable_tasks.h"
+#include "spec/design_spec.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,8 +4,8 @@
 #include "local_run.h"
 #include "result_format.h"
 
-#include "spec/design_spec.h"
 #include "design/evaluate_design.h"
+#include "spec/design_spec.h"
 
 #include <spdlog/spdlog.h>
 

@@ -4,9 +4,9 @@
 #include "local_run.h"
 #include "report_html.h"
 
-#include "spec/design_spec.h"
 #include "design/progress.h"
 #include "pddl/parse_error.h"
+#include "spec/design_spec.h"
 
 #include <spdlog/spdlog.h>
 

@@ -6,7 +6,6 @@
 #include <google/protobuf/text_format.h>
 #include <google/protobuf/util/json_util.h>
 
-
 namespace envdesign::bridge {
 namespace {
 

@@ -29,4 +29,4 @@ Problem parse_problem_text(const std::string &text, const std::string &name, con
 Problem parse_problem_file(const std::string &path, const Domain &domain,
                            const std::string &other_domain_name = "");
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

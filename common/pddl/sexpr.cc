@@ -1,6 +1,5 @@
 #include "pddl/sexpr.h"
 
-
 #include <cctype>
 #include <sstream>
 

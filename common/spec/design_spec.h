@@ -48,7 +48,7 @@ std::optional<std::string> probability_warning(const SpecFile &spec);
 // From a spec already read; its PDDL files come from `files`. A file `files` cannot give is
 // an error at the spec's field naming it.
 design::DesignProblem load_design_problem(const SpecFile &spec, const FileSource &files,
-                                  Checks checks = Checks::FULL);
+                                          Checks checks = Checks::FULL);
 
 // The same with the files on disk, relative to the directory of spec.path.
 design::DesignProblem load_design_problem(const SpecFile &spec);

@@ -184,4 +184,4 @@ envdesign::spec_t bundle_spec(const std::string &spec_path) {
     return spec;
 }
 
-} // namespace envdesign::client
+} // namespace envdesign::spec

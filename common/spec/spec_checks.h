@@ -12,7 +12,8 @@ namespace envdesign::spec {
 
 // Reads one edit of the spec; `field` is its path ("modification[0].edit[1]") for messages.
 // Throws pddl::ParseError when the edit sets no kind or its text is not an S-expression.
-design::Edit edit_from_proto(const proto::Edit &edit, const std::string &field, const SpecFile &spec);
+design::Edit edit_from_proto(const proto::Edit &edit, const std::string &field,
+                             const SpecFile &spec);
 
 // Applies each modification on its own, STRICT, to every task's robot and/or human model,
 // and compiles and grounds every task's unmodified pair; throws pddl::ParseError at the

@@ -1,7 +1,7 @@
 #include "spec/spec_reader.h"
 
-#include "spec/json_positions.h"
 #include "pddl/input_file.h"
+#include "spec/json_positions.h"
 
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>

@@ -10,8 +10,8 @@
 //   pddl::Location where = spec.at("modification[1].edit[0].remove_init");
 //   // where.to_string() == "examples/.../c-two-tasks-t10.textproto:14:10"
 
-#include "spec/proto/design_problem.pb.h"
 #include "pddl/parse_error.h"
+#include "spec/proto/design_problem.pb.h"
 
 #include <memory>
 #include <string>

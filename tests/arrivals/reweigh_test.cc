@@ -187,8 +187,7 @@ TEST(Reweigh, DueOnChangeRateLimitedNotWhilePending) {
 // Arrivals stamped 10 minutes ahead of the bridge's clock (beyond --max-future 300 s) still
 // move the estimate, from their order, and the skew counter shows them.
 TEST(Reweigh, ArrivalsFromASkewedClockStillMoveTheEstimate) {
-    Bridge bridge(
-        std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{}));
+    Bridge bridge(std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{}));
     const int64_t ten_minutes = 600'000'000;
     for (int i = 0; i < 10; ++i)
         bridge.tracker.receive(

@@ -11,11 +11,11 @@
 #include "cluster/coordinator.h"
 #include "cluster/planner.h"
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/local_evaluator.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/task_distribution_t.hpp"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

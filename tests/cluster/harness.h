@@ -8,12 +8,12 @@
 #include "cluster/planner.h"
 #include "cluster/result_message.h"
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/explanation.h"
 #include "design/local_evaluator.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "result_format.h"
+#include "spec/design_spec.h"
 #include "spec/spec_bundle.h"
 
 #include <gtest/gtest.h>

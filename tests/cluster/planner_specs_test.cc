@@ -36,7 +36,8 @@ TEST(PlannerSpecs, LoadsWithoutTheFullCheck) {
 
 // Hostile bytes whose hash matches: a parse error is the spec's error, never a crash.
 TEST(PlannerSpecs, ABadSpecIsAnError) {
-    envdesign::spec_t spec = spec::bundle_spec(in_repo("examples/restaurant/c-two-tasks-t10.textproto"));
+    envdesign::spec_t spec =
+        spec::bundle_spec(in_repo("examples/restaurant/c-two-tasks-t10.textproto"));
     spec.files[0].content = "(define (domain";
     PlannerSpecs specs(4);
     auto loaded = specs.load(give(specs, spec));

@@ -4,11 +4,11 @@
 
 #include "bus/codec.h"
 #include "cluster/result_message.h"
-#include "spec/design_spec.h"
 #include "design/explanation.h"
 #include "design/local_evaluator.h"
 #include "plan_diff.h"
 #include "result_format.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

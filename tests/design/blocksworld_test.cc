@@ -2,8 +2,8 @@
 // new predicate, and a modification that changes no ground task.
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,10 @@
 // a file another store wrote.
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/evaluation_record.h"
 #include "design/local_evaluator.h"
 #include "design/stored_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

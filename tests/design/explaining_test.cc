@@ -4,13 +4,13 @@
 // with no bound, on seeded generated design problems.
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/evaluation_record.h"
 #include "design/explaining.h"
 #include "design/local_evaluator.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

@@ -3,10 +3,10 @@
 // checked against re-running the exact search at other horizons and alphas.
 
 #include "design/break_even.h"
-#include "spec/design_spec.h"
 #include "design/evaluate_design.h"
 #include "design/explanation.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

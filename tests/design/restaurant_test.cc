@@ -4,9 +4,9 @@
 // evaluating all 64 configurations without any bound.
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/local_evaluator.h"
 #include "design/relevance.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

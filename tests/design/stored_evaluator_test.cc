@@ -3,8 +3,8 @@
 #include "design/stored_evaluator.h"
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // hitting-set phase proves the answer (on); the exhaustive search is the reference.
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

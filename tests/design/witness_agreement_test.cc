@@ -34,9 +34,9 @@
 // removed.
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/explicability.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 

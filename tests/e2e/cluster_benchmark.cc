@@ -13,8 +13,8 @@
 #include "bus/log.h"
 
 #include "design/design_search.h"
-#include "spec/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <envdesign/client/client.h>
 

@@ -9,7 +9,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     try {
         envdesign::spec::read_spec_text(std::string(reinterpret_cast<const char *>(data), size),
-                                          "fuzz.json");
+                                        "fuzz.json");
     } catch (const envdesign::pddl::ParseError &) {
     }
     return 0;

@@ -99,8 +99,7 @@ TEST(SpecMessage, AFileTheRequestDoesNotCarryIsAnErrorAtItsField) {
         load_spec(message, Checks::TRUSTED_BY_HASH);
         FAIL() << "no error";
     } catch (const pddl::ParseError &e) {
-        EXPECT_EQ(e.message(),
-                  "the request does not carry '" + problem + "' (task[1].problem)");
+        EXPECT_EQ(e.message(), "the request does not carry '" + problem + "' (task[1].problem)");
         pddl::Location want = field_of(RESTAURANT_C, "task[1].problem");
         EXPECT_EQ(e.location().to_string(), want.to_string());
         EXPECT_GT(want.line, 1);
@@ -150,12 +149,13 @@ TEST(SpecMessage, TrustedByHashStillParses) {
 }
 
 TEST(SpecBundle, FindsThePathFieldsOfTheTextFormat) {
-    auto paths = named_paths("# comment robot_domain: \"no\"\n"
-                             "robot_domain: \"d.pddl\"\n"
-                             "task { name: \"t\" problem: 'p' \"1.pddl\" }\n"
-                             "task: { human_problem: \"h.pddl\" problem: \"p2.pddl\" }\n"
-                             "modification { name: \"problem\" edit { add_init: \"(problem)\" } }\n",
-                             false);
+    auto paths =
+        named_paths("# comment robot_domain: \"no\"\n"
+                    "robot_domain: \"d.pddl\"\n"
+                    "task { name: \"t\" problem: 'p' \"1.pddl\" }\n"
+                    "task: { human_problem: \"h.pddl\" problem: \"p2.pddl\" }\n"
+                    "modification { name: \"problem\" edit { add_init: \"(problem)\" } }\n",
+                    false);
     ASSERT_EQ(paths.size(), 4u);
     EXPECT_EQ(paths[0].path, "d.pddl");
     EXPECT_EQ(paths[0].line, 2);

@@ -10,8 +10,8 @@
 #include "envdesign/design_progress_t.hpp"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
-#include "result_format.h"
 #include "pddl/parse_error.h"
+#include "result_format.h"
 #include "spec/spec_bundle.h"
 
 #include <cstdio>
