@@ -11,6 +11,7 @@ namespace envdesign::spec {
 namespace {
 
 using design::ApplyMode;
+using design::CompiledTask;
 using design::DesignProblem;
 using design::Edit;
 using design::EditKind;

@@ -10,6 +10,8 @@ namespace envdesign::spec {
 namespace {
 
 using design::DesignProblem;
+using design::Distance;
+using design::Model;
 
 const std::string EXAMPLES = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/";
 const std::string DATA = std::string(ENVDESIGN_TEST_DATA) + "/design/";
