@@ -139,6 +139,33 @@ TEST(SpecMessage, TrustedByHashParsesWithoutTheFullCheck) {
     EXPECT_EQ(trusted.modifications[0].edits.size(), 1u);
 }
 
+// What the full check would have rejected reaches a planner's evaluator only through hostile
+// bytes with a matching hash: evaluating such a design is an error (or, for edits that a
+// LENIENT apply skips, a result), never a crash. The planner answers a thrown error as
+// STATUS_BAD_INPUT (planner.cc).
+TEST(SpecMessage, TrustedSpecsFailPerEvaluationNotPerProcess) {
+    struct Case {
+        const char *file;
+        bool throws;
+    };
+    for (Case c : {Case{"remove-absent", false}, Case{"unknown-action", false}, Case{"arity", true},
+                   Case{"unknown-object", true}, Case{"unknown-parameter", true}}) {
+        std::string path = in_repo("tests/data/design/bad/") + c.file + ".textproto";
+        envdesign::spec_t message = bundle_spec(path);
+        EXPECT_THROW(load_spec(message, Checks::FULL), pddl::ParseError) << c.file;
+        design::DesignProblem problem = load_spec(message, Checks::TRUSTED_BY_HASH);
+        design::LocalEvaluator evaluator(problem, 1);
+        auto evaluate = [&] {
+            return design::evaluate_design(
+                problem, evaluator, design::configuration_of(problem, {"m"}), design::Deadline{});
+        };
+        if (c.throws)
+            EXPECT_THROW(evaluate(), pddl::ParseError) << c.file;
+        else
+            EXPECT_TRUE(evaluate().best) << c.file;
+    }
+}
+
 TEST(SpecMessage, TrustedByHashStillParses) {
     envdesign::spec_t message = bundle_spec(RESTAURANT_C);
     message.text += "\nmodification { name: \"x\" edit { add_init: \"(open\" } }\n";
