@@ -6,9 +6,9 @@
 #include "result_format.h"
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/progress.h"
 #include "design/relevance.h"
+#include "spec/design_spec.h"
 
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
@@ -107,7 +107,7 @@ int run_design(const DesignFlags &flags) {
     if (!flags.connect.empty())
         return run_design_remote(flags);
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
-    design::DesignProblem problem = design::load_design_problem(flags.spec);
+    design::DesignProblem problem = spec::load_design_problem(flags.spec);
     std::vector<std::string> warnings = problem.warnings;
     print_warnings(warnings);
     design::DesignSearchOptions options = search_options(flags, problem);

@@ -1,7 +1,7 @@
 #include "design_warnings.h"
 
-#include "design/design_spec.h"
 #include "design/unsolvable_tasks.h"
+#include "spec/design_spec.h"
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +40,7 @@ std::vector<std::string> unsolvable_task_warnings(const design::DesignProblem &p
 
 std::vector<std::string> remote_spec_warnings(const std::string &spec_path) {
     try {
-        if (auto warning = design::probability_warning(design::read_spec_file(spec_path)))
+        if (auto warning = spec::probability_warning(spec::read_spec_file(spec_path)))
             return {*warning};
     } catch (const pddl::ParseError &) { // the coordinator's answer names it
     }
@@ -61,7 +61,7 @@ std::vector<std::string> remote_unsolvable_task_warnings(const std::string &spec
     if (!any)
         return {};
     try {
-        design::DesignProblem problem = design::load_design_problem(spec_path);
+        design::DesignProblem problem = spec::load_design_problem(spec_path);
         if (tasks.size() != problem.tasks.size())
             return {};
         design::DesignResult known;

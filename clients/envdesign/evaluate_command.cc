@@ -4,8 +4,8 @@
 #include "local_run.h"
 #include "result_format.h"
 
-#include "design/design_spec.h"
 #include "design/evaluate_design.h"
+#include "spec/design_spec.h"
 
 #include <spdlog/spdlog.h>
 
@@ -46,7 +46,7 @@ void add_evaluate_flags(CLI::App &command, EvaluateFlags &flags) {
 
 int run_evaluate(const EvaluateFlags &flags) {
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
-    std::optional<design::DesignProblem> problem = design::load_design_problem(flags.spec);
+    std::optional<design::DesignProblem> problem = spec::load_design_problem(flags.spec);
     design::Configuration configuration;
     try {
         configuration = design::configuration_of(*problem, split_names(flags.design));

@@ -4,9 +4,9 @@
 #include "local_run.h"
 #include "report_html.h"
 
-#include "design/design_spec.h"
 #include "design/progress.h"
 #include "pddl/parse_error.h"
+#include "spec/design_spec.h"
 
 #include <spdlog/spdlog.h>
 
@@ -27,7 +27,7 @@ void add_report_flags(CLI::App &command, ReportFlags &flags) {
 
 int run_report(const ReportFlags &flags) {
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
-    std::optional<design::DesignProblem> problem = design::load_design_problem(flags.spec);
+    std::optional<design::DesignProblem> problem = spec::load_design_problem(flags.spec);
     design::DesignSearchOptions options;
     options.max_design_size = problem->max_design_size;
     double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem->time_limit_s;

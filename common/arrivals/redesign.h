@@ -15,7 +15,7 @@
 // ground during the search, is taken out again and reported as refused.
 //
 // Example:
-//   Redesigner r(design::load_design_problem("spec.textproto"), {});
+//   Redesigner r(spec::load_design_problem("spec.textproto"), {});
 //   Redesign first = r.redesign(r.distribution(), {});        // the spec's D
 //   Redesign next = r.redesign({{"serve-g1", 0.1}, {"serve-g2", 0.9}}, {});
 //   next.change.changed, next.change.explanation, next.change.planner_runs (0: re-weighting)

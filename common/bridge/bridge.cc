@@ -4,7 +4,8 @@
 
 #include "bus/channels.h"
 #include "bus/log.h"
-#include "design/design_spec.h"
+#include "spec/design_spec.h"
+#include "spec/spec_bundle.h"
 
 #include <cmath>
 #include <limits>
@@ -49,11 +50,11 @@ Bridge::Bridge(bus::Bus &bus, BridgeConfig config, arrivals::ArrivalSource &sour
     std::map<std::string, design::DesignProblem> problems;
     std::map<std::string, envdesign::spec_t> specs;
     for (const auto &source : config_.problems) {
-        design::DesignProblem problem = design::load_design_problem(source.spec_path);
+        design::DesignProblem problem = spec::load_design_problem(source.spec_path);
         tracker_.add_problem(source.id, spec_distribution(problem));
         problems_[source.id].design.objective = std::numeric_limits<double>::quiet_NaN();
         if (config_.mode == Mode::COORDINATOR)
-            specs[source.id] = read_spec_message(source.spec_path);
+            specs[source.id] = spec::bundle_spec(source.spec_path);
         problems.emplace(source.id, std::move(problem));
     }
     Answered answered = [this](Answer a) { on_answer(std::move(a)); };

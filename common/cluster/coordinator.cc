@@ -144,11 +144,7 @@ void Coordinator::on_request(const design_request_t &request) {
     }
     bus_.log().info("request {} | accepted: spec {} with {} file(s)", name, request.spec.name,
                     request.spec.files.size());
-    RunContext context{bus_,
-                       router_,
-                       specs_,
-                       config_.work_dir,
-                       config_.grace_s,
+    RunContext context{bus_, router_, specs_, config_.grace_s,
                        config_.stored_evaluations > 0 ? &stores_ : nullptr};
     open_[name].run = std::make_unique<RequestRun>(context, request);
     open_[name].client_origin = bus_.message_sender();

@@ -39,7 +39,6 @@ namespace envdesign::cluster {
 
 struct CoordinatorConfig {
     std::string instance;   // this coordinator's name on the bus
-    std::string work_dir;   // scratch space for loading specs
     int max_active = 4;     // requests searched at once
     int max_waiting = 32;   // requests waiting for a search slot, from all clients
     int max_per_client = 8; // requests searching or waiting per client (sender)

@@ -42,8 +42,7 @@ private:
 };
 
 Planner::Planner(bus::Bus &bus, PlannerConfig config)
-    : bus_(bus), config_(std::move(config)),
-      specs_(config_.work_dir, config_.max_specs, config_.spec_limits),
+    : bus_(bus), config_(std::move(config)), specs_(config_.max_specs, config_.spec_limits),
       memory_(static_cast<std::size_t>(std::max(0, config_.remembered_answers))),
       status_(bus, "planner", config_.instance) {
     subscriptions_.push_back(bus_.subscribe<envdesign::job_t>(

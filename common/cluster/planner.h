@@ -38,7 +38,6 @@ namespace envdesign::cluster {
 
 struct PlannerConfig {
     std::string instance;
-    std::string work_dir;
     int workers = 1;
     double heartbeat_period_s = 0.2;
     double need_retry_s = 0.3;

@@ -1,9 +1,9 @@
 #include "cluster/planner_specs.h"
 
 #include "bus/codec.h"
-#include "cluster/spec_loader.h"
 #include "envdesign/spec_t.hpp"
 #include "pddl/parse_error.h"
+#include "spec/spec_message.h"
 
 #include <algorithm>
 
@@ -161,8 +161,9 @@ std::shared_ptr<const LoadedSpec> PlannerSpecs::load_now(const std::string &hash
     try {
         if (!bus::decode_message(bytes, message))
             spec->error = "the spec does not decode as spec_t";
-        else
-            spec->problem = load_spec(message, work_dir_);
+        else // the hash matched: the coordinator checked these bytes in full
+            spec->problem =
+                envdesign::spec::load_spec(message, envdesign::spec::Checks::TRUSTED_BY_HASH);
     } catch (const pddl::ParseError &e) {
         spec->error = e.what();
     } catch (const std::exception &e) {

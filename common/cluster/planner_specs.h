@@ -1,8 +1,9 @@
 #pragma once
 // The specs a planner knows, by content hash: chunks heard on ENVDESIGN_SPEC are assembled
 // (every planner keeps every spec it hears, so one that joins later rarely has to ask), the
-// assembled encoding is checked against its hash, and a spec is loaded (spec_loader.h) the
-// first time a job needs it. At most `max_specs` specs are kept, the least recently used
+// assembled encoding is checked against its hash, and a spec is loaded
+// (spec/spec_message.h, Checks::TRUSTED_BY_HASH: parsed, not re-checked) the first time a
+// job needs it. At most `max_specs` specs are kept, the least recently used
 // going first. Specs being assembled are bounded too (SpecLimits): anyone on the bus can send
 // chunks. Thread-safe: chunks come from the bus thread, loads from worker threads.
 
@@ -38,8 +39,8 @@ class PlannerSpecs {
 public:
     enum class Added { INCOMPLETE, COMPLETED, KNOWN, BAD };
 
-    PlannerSpecs(std::string work_dir, int max_specs, SpecLimits limits = {})
-        : work_dir_(std::move(work_dir)), max_specs_(std::max(1, max_specs)), limits_(limits) {}
+    explicit PlannerSpecs(int max_specs, SpecLimits limits = {})
+        : max_specs_(std::max(1, max_specs)), limits_(limits) {}
 
     // `why` says what is wrong when BAD.
     Added add_chunk(const envdesign::spec_chunk_t &chunk, std::string &why);
@@ -74,7 +75,6 @@ private:
     std::map<std::string, Entry>::iterator oldest_incomplete(const std::string &keep);
     std::size_t incomplete_bytes_locked() const;
 
-    std::string work_dir_;
     int max_specs_;
     SpecLimits limits_;
     mutable std::mutex mutex_;

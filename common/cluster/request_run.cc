@@ -5,13 +5,13 @@
 #include "bus/log.h"
 #include "cluster/lcm_evaluator.h"
 #include "cluster/spec_chunks.h"
-#include "cluster/spec_loader.h"
 #include "cluster/wire.h"
 #include "design/evaluation_log.h"
 #include "design/explanation.h"
 #include "design/relevance.h"
 #include "design/stored_evaluator.h"
 #include "pddl/parse_error.h"
+#include "spec/spec_message.h"
 
 #include <algorithm>
 #include <optional>
@@ -81,7 +81,9 @@ void RequestRun::run() {
     auto &log = context_.bus.log();
     try {
         set_state(design_progress_t::STATE_LOADING);
-        design::DesignProblem problem = load_spec(request_.spec, context_.work_dir);
+        // The one full check of this spec: planners load these bytes trusting their hash.
+        design::DesignProblem problem =
+            envdesign::spec::load_spec(request_.spec, envdesign::spec::Checks::FULL);
         std::string bytes = bus::encode_message(request_.spec);
         hash = content_hash(bytes);
         for (const auto &chunk : context_.specs.add(hash, bytes, request_.request_id))

@@ -28,7 +28,6 @@ struct RunContext {
     bus::Bus &bus;
     JobRouter &router;
     SpecLibrary &specs;
-    std::string work_dir;
     double grace_s = 1.0; // after the deadline, planners' LIMIT answers are awaited this long
     EvaluationStores *stores = nullptr; // evaluations kept across requests; null: none
 };

@@ -1,3 +1,4 @@
+#include "pddl/input_file.h"
 #include "pddl/name_scope.h"
 #include "pddl/parser.h"
 
@@ -225,8 +226,12 @@ Domain parse_domain(const SExpr &define, const std::string &file) {
     return domain;
 }
 
+Domain parse_domain_text(const std::string &text, const std::string &name) {
+    return parse_domain(read_sexpr(text, name), name);
+}
+
 Domain parse_domain_file(const std::string &path) {
-    return parse_domain(read_sexpr_file(path), path);
+    return parse_domain_text(read_input_file(path), path);
 }
 
 } // namespace envdesign::pddl

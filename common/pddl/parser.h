@@ -13,6 +13,10 @@
 namespace envdesign::pddl {
 
 Domain parse_domain(const SExpr &define, const std::string &file);
+// From PDDL text in memory (e.g. a file carried by a bus message); `name` is the file name
+// errors give ("domain.pddl:3:7: error: ...").
+Domain parse_domain_text(const std::string &text, const std::string &name);
+// Reads `path` (pddl/input_file.h) and parses it as parse_domain_text does.
 Domain parse_domain_file(const std::string &path);
 
 // The problem is checked against `domain`: every predicate, object and type must exist.
@@ -20,7 +24,9 @@ Domain parse_domain_file(const std::string &path);
 // problem may be the robot's own file, naming the robot's domain).
 Problem parse_problem(const SExpr &define, const std::string &file, const Domain &domain,
                       const std::string &other_domain_name = "");
+Problem parse_problem_text(const std::string &text, const std::string &name, const Domain &domain,
+                           const std::string &other_domain_name = "");
 Problem parse_problem_file(const std::string &path, const Domain &domain,
                            const std::string &other_domain_name = "");
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

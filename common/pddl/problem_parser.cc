@@ -1,3 +1,4 @@
+#include "pddl/input_file.h"
 #include "pddl/name_scope.h"
 #include "pddl/parser.h"
 
@@ -14,8 +15,8 @@ int parse_function_value(const SExpr &e) {
             return value;
     } catch (const std::exception &) {
     }
-    throw ParseError(e.location, "function value '" + e.to_string() +
-                                     "' is not a non-negative integer");
+    throw ParseError(e.location,
+                     "function value '" + e.to_string() + "' is not a non-negative integer");
 }
 
 void parse_init(const SExpr &section, const NameScope &scope, Problem &problem) {
@@ -35,7 +36,7 @@ void parse_init(const SExpr &section, const NameScope &scope, Problem &problem) 
             throw ParseError(e.location, "negative literals are not allowed in :init "
                                          "(closed world: leave the atom out)");
         Atom atom = scope.parse_atom(e);
-        if (seen.insert(atom).second)  // repeated atoms are harmless; keep the first
+        if (seen.insert(atom).second) // repeated atoms are harmless; keep the first
             problem.init.push_back(atom);
     }
 }
@@ -47,7 +48,7 @@ void parse_metric(const SExpr &section, Problem &problem) {
     problem.minimize_total_cost = true;
 }
 
-}  // namespace
+} // namespace
 
 Problem parse_problem(const SExpr &define, const std::string &file, const Domain &domain,
                       const std::string &other_domain_name) {
@@ -77,14 +78,14 @@ Problem parse_problem(const SExpr &define, const std::string &file, const Domain
                                  "problem is for domain '" + problem.domain_name +
                                      "' but the domain file defines '" + domain.name + "'");
         } else if (head == ":requirements") {
-            continue;  // the domain's requirements govern
+            continue; // the domain's requirements govern
         } else if (head == ":objects") {
             auto objects = parse_typed_list(section.items, 1, "object", &domain.type_parent);
             for (const auto &o : objects) {
                 bool is_constant = false;
                 for (const auto &c : domain.constants)
                     is_constant |= c.name == o.name;
-                if (!is_constant)  // IPC problems often repeat the domain's constants
+                if (!is_constant) // IPC problems often repeat the domain's constants
                     problem.objects.push_back(o);
             }
             scope.add_objects(problem.objects);
@@ -107,9 +108,14 @@ Problem parse_problem(const SExpr &define, const std::string &file, const Domain
     return problem;
 }
 
-Problem parse_problem_file(const std::string &path, const Domain &domain,
+Problem parse_problem_text(const std::string &text, const std::string &name, const Domain &domain,
                            const std::string &other_domain_name) {
-    return parse_problem(read_sexpr_file(path), path, domain, other_domain_name);
+    return parse_problem(read_sexpr(text, name), name, domain, other_domain_name);
 }
 
-}  // namespace envdesign::pddl
+Problem parse_problem_file(const std::string &path, const Domain &domain,
+                           const std::string &other_domain_name) {
+    return parse_problem_text(read_input_file(path), path, domain, other_domain_name);
+}
+
+} // namespace envdesign::pddl

@@ -1,7 +1,5 @@
 #include "pddl/sexpr.h"
 
-#include "pddl/input_file.h"
-
 #include <cctype>
 #include <sstream>
 
@@ -118,7 +116,5 @@ SExpr read_sexpr(const std::string &text, const std::string &file) {
     // A stray ')' is reported where it is, not as trailing content.
     return Reader(text, file).read_top();
 }
-
-SExpr read_sexpr_file(const std::string &path) { return read_sexpr(read_input_file(path), path); }
 
 } // namespace envdesign::pddl

@@ -11,9 +11,9 @@ namespace envdesign::pddl {
 
 struct SExpr {
     bool is_list = false;
-    std::string symbol;         // when !is_list
-    std::vector<SExpr> items;   // when is_list
-    Location location;          // of the symbol or the opening parenthesis
+    std::string symbol;       // when !is_list
+    std::vector<SExpr> items; // when is_list
+    Location location;        // of the symbol or the opening parenthesis
 
     bool is_symbol(const std::string &s) const { return !is_list && symbol == s; }
     // True for a list whose first item is the symbol `head`.
@@ -27,7 +27,4 @@ struct SExpr {
 // Throws ParseError on unbalanced parentheses or trailing content.
 SExpr read_sexpr(const std::string &text, const std::string &file);
 
-// Reads a whole file; throws ParseError naming the file if it cannot be opened.
-SExpr read_sexpr_file(const std::string &path);
-
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

@@ -1,7 +1,6 @@
 // envdesign-coordinator: the design search as a service (README.md).
 
 #include "cluster/coordinator.h"
-#include "cluster/spec_loader.h"
 #include "service_main.h"
 
 #include <envdesign/version.h>
@@ -13,7 +12,6 @@ int main(int argc, char **argv) {
     services::add_common_flags(app, common);
     app.set_version_flag("--version", version_line("envdesign-coordinator"));
     cluster::CoordinatorConfig config;
-    config.work_dir = cluster::default_work_dir();
     app.add_option("--max-requests", config.max_active, "requests searched at once")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
@@ -71,8 +69,6 @@ int main(int argc, char **argv) {
     app.add_option("--takeover-after", config.election.takeover_after_s,
                    "standby: seconds of silence from the active coordinator before taking over")
         ->check(CLI::Range(1.5, 3600.0))
-        ->capture_default_str();
-    app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))
         return *code;

@@ -1,7 +1,6 @@
 // envdesign-planner: evaluates candidate designs for coordinators (README.md).
 
 #include "cluster/planner.h"
-#include "cluster/spec_loader.h"
 #include "service_main.h"
 
 #include <envdesign/version.h>
@@ -13,7 +12,6 @@ int main(int argc, char **argv) {
     services::add_common_flags(app, common);
     app.set_version_flag("--version", version_line("envdesign-planner"));
     cluster::PlannerConfig config;
-    config.work_dir = cluster::default_work_dir();
     app.add_option("--workers", config.workers, "jobs worked on at once (threads)")
         ->check(CLI::Range(1, 256))
         ->capture_default_str();
@@ -30,8 +28,6 @@ int main(int argc, char **argv) {
     app.add_option("--max-spec-bytes", config.spec_limits.max_spec_bytes,
                    "largest spec encoding taken from the bus (chunks of larger ones are dropped)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30))
-        ->capture_default_str();
-    app.add_option("--work-dir", config.work_dir, "scratch directory for specs")
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))
         return *code;

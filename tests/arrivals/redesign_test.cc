@@ -3,7 +3,7 @@
 
 #include "arrivals/redesign.h"
 
-#include "design/design_spec.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -31,7 +31,7 @@ std::string read(const std::string &path) {
 
 // A fresh search (new evaluator, empty caches) of the spec with D = `d`.
 design::DesignResult fresh(const Distribution &d) {
-    design::DesignProblem problem = design::load_design_problem(SPEC);
+    design::DesignProblem problem = spec::load_design_problem(SPEC);
     for (auto &t : problem.tasks)
         t.probability = d.at(t.name);
     design::LocalEvaluator evaluator(problem, 1);
@@ -43,7 +43,7 @@ std::vector<std::string> names(const Redesigner &r, const design::DesignResult &
 }
 
 TEST(Redesign, FirstRunIsTheSpecsDesign) {
-    Redesigner r(design::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(SPEC), {});
     Redesign first = r.redesign(r.distribution(), {});
     ASSERT_TRUE(first.result.best);
     EXPECT_TRUE(first.result.optimal);
@@ -69,12 +69,12 @@ TEST(Redesign, ARestartedRedesignerFindsItsEvaluationsInTheStateFile) {
     RedesignOptions options;
     options.evaluations = open();
     {
-        Redesigner before(design::load_design_problem(SPEC), options);
+        Redesigner before(spec::load_design_problem(SPEC), options);
         EXPECT_GT(before.redesign(g1(0.9), {}).change.planner_runs, 0);
         EXPECT_GT(before.redesign(g1(0.1), {}).change.planner_runs, 0);
     }
     options.evaluations = open(); // the process restarted
-    Redesigner after(design::load_design_problem(SPEC), options);
+    Redesigner after(spec::load_design_problem(SPEC), options);
     Redesign again = after.redesign(g1(0.1), {});
     EXPECT_EQ(again.change.planner_runs, 0);
     EXPECT_EQ(names(after, again.result), names(after, fresh(g1(0.1))));
@@ -84,7 +84,7 @@ TEST(Redesign, ARestartedRedesignerFindsItsEvaluationsInTheStateFile) {
 // 0.9 -> 0.1 flips the design to barrier-00-01, as a fresh search says; the old design
 // costs more under the new D. Going back and forth again costs no planner run.
 TEST(Redesign, DriftFlipsTheDesignThenReweightingIsFree) {
-    Redesigner r(design::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(SPEC), {});
     r.redesign(g1(0.9), {});
     Redesign flip = r.redesign(g1(0.1), {});
     EXPECT_TRUE(flip.change.changed);
@@ -113,7 +113,7 @@ TEST(Redesign, DriftFlipsTheDesignThenReweightingIsFree) {
 
 // Re-weighting is exact: for D along the way, the design and objective of a fresh search.
 TEST(Redesign, SameAsFreshSearchesAlongTheDrift) {
-    Redesigner r(design::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(SPEC), {});
     for (double p : {0.9, 0.8, 0.75, 0.7, 0.5, 0.3, 0.1, 0.0, 1.0, 0.85}) {
         Redesign got = r.redesign(g1(p), {});
         design::DesignResult expected = fresh(g1(p));
@@ -128,7 +128,7 @@ TEST(Redesign, SameAsFreshSearchesAlongTheDrift) {
 // serve-g2 again under another name, so the answer is known: with D = 0.9 on it the design
 // is the one for serve-g2-heavy D.
 TEST(Redesign, NewTaskIsAddedAndEvaluated) {
-    Redesigner r(design::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(SPEC), {});
     r.redesign(r.distribution(), {});
     NewTask task{"serve-g2-again", read(RESTAURANT + "serve-g2.pddl"),
                  read(RESTAURANT + "serve-g2-human.pddl")};
@@ -151,7 +151,7 @@ TEST(Redesign, NewTaskIsAddedAndEvaluated) {
 
 // Bad PDDL for a new task: refused with the parser's message; the search still runs.
 TEST(Redesign, BadNewTaskIsRefused) {
-    Redesigner r(design::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(SPEC), {});
     r.redesign(r.distribution(), {});
     Redesign got = r.redesign(g1(0.1), {{"broken", "(define (problem x) (:domain restaurant)", ""},
                                         {"ghost",

@@ -7,7 +7,7 @@
 #include "arrivals/redesign.h"
 #include "arrivals/tracker.h"
 
-#include "design/design_spec.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -82,7 +82,7 @@ struct Bridge {
 };
 
 design::DesignResult fresh(const Distribution &d) {
-    design::DesignProblem problem = design::load_design_problem(SPEC);
+    design::DesignProblem problem = spec::load_design_problem(SPEC);
     for (auto &t : problem.tasks)
         t.probability = d.at(t.name);
     design::LocalEvaluator evaluator(problem, 1);
@@ -94,7 +94,7 @@ design::DesignResult fresh(const Distribution &d) {
 // is needed (both sides were evaluated before), so the design in force becomes the optimal
 // one with no drift request and no planner run. The old bridge kept {} until TV 0.2.
 TEST(Reweigh, TheDesignFollowsAMixBelowTheThresholdWithoutPlanners) {
-    auto r = std::make_unique<Redesigner>(design::load_design_problem(SPEC), RedesignOptions{});
+    auto r = std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{});
     r->redesign(g1(0.1), {});
     r->redesign(g1(0.9), {}); // the design in force: {}, for 0.9
     Bridge bridge(std::move(r));
@@ -122,7 +122,7 @@ TEST(Reweigh, TheDesignFollowsAMixBelowTheThresholdWithoutPlanners) {
 // asked for only when the drift detector passes its threshold, and then the design is the
 // optimal one.
 TEST(Reweigh, MissingEvaluationsWaitForTheDriftThreshold) {
-    auto r = std::make_unique<Redesigner>(design::load_design_problem(SPEC), RedesignOptions{});
+    auto r = std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{});
     r->redesign(g1(0.9), {});
     Bridge bridge(std::move(r));
     // Straight to the far side: a reweigh alone cannot prove the barrier's design.
@@ -187,8 +187,7 @@ TEST(Reweigh, DueOnChangeRateLimitedNotWhilePending) {
 // Arrivals stamped 10 minutes ahead of the bridge's clock (beyond --max-future 300 s) still
 // move the estimate, from their order, and the skew counter shows them.
 TEST(Reweigh, ArrivalsFromASkewedClockStillMoveTheEstimate) {
-    Bridge bridge(
-        std::make_unique<Redesigner>(design::load_design_problem(SPEC), RedesignOptions{}));
+    Bridge bridge(std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{}));
     const int64_t ten_minutes = 600'000'000;
     for (int i = 0; i < 10; ++i)
         bridge.tracker.receive(

@@ -11,11 +11,11 @@
 #include "cluster/coordinator.h"
 #include "cluster/planner.h"
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/local_evaluator.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/task_distribution_t.hpp"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -40,7 +40,7 @@ struct Optimum {
 
 // The exhaustive search for the spec with P(serve-g1) = p: the independent answer.
 Optimum exhaustive(double p) {
-    design::DesignProblem problem = design::load_design_problem(SPEC);
+    design::DesignProblem problem = spec::load_design_problem(SPEC);
     for (auto &task : problem.tasks)
         task.probability = task.name == "serve-g1" ? p : 1 - p;
     design::LocalEvaluator evaluator(problem, 1);
@@ -83,7 +83,6 @@ BridgeConfig config(double threshold, Mode mode) {
 std::unique_ptr<cluster::Coordinator> coordinator_on(bus::Bus &bus) {
     cluster::CoordinatorConfig c;
     c.instance = "coordinator";
-    c.work_dir = ::testing::TempDir();
     c.pool.planner_timeout_s = 0.5;
     c.pool.lost_after_s = 0.15;
     return std::make_unique<cluster::Coordinator>(bus, c);
@@ -92,7 +91,6 @@ std::unique_ptr<cluster::Coordinator> coordinator_on(bus::Bus &bus) {
 std::unique_ptr<cluster::Planner> planner_on(bus::Bus &bus) {
     cluster::PlannerConfig p;
     p.instance = "planner-0";
-    p.work_dir = ::testing::TempDir();
     p.heartbeat_period_s = 0.05;
     return std::make_unique<cluster::Planner>(bus, p);
 }

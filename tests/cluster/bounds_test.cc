@@ -106,7 +106,7 @@ envdesign::spec_chunk_t forged_chunk(int number, std::int32_t claimed_bytes, int
 
 // Two 213-byte chunks claiming 1 GB each once made a planner allocate 2 GB for good.
 TEST(Bounds, ChunksClaimingHugeSpecsAreRefused) {
-    PlannerSpecs specs("/tmp", 4);
+    PlannerSpecs specs(4);
     std::string why;
     // The last chunk of a spec claiming ~1 GB: 200 bytes of data.
     std::int32_t claimed = 31'249 * CHUNK_BYTES + 200;
@@ -123,7 +123,7 @@ TEST(Bounds, SpecsBeingAssembledAreBounded) {
     limits.max_incomplete = 3;
     limits.max_incomplete_bytes = 5 * CHUNK_BYTES;
     limits.expire_s = 0.2;
-    PlannerSpecs specs("/tmp", 4, limits);
+    PlannerSpecs specs(4, limits);
     std::string why;
     for (int n = 0; n < 20; ++n)
         for (int i = 0; i < 3; ++i)

@@ -37,7 +37,7 @@ TEST(Cluster, TwoPlannersGiveTheLocalResult) {
 class FlakyPlanner {
 public:
     FlakyPlanner(bus::Bus &bus, const std::string &spec)
-        : bus_(bus), problem_(design::load_design_problem(spec)), evaluator_(problem_, 1) {
+        : bus_(bus), problem_(spec::load_design_problem(spec)), evaluator_(problem_, 1) {
         jobs_ = bus.subscribe<envdesign::job_t>(bus::JOB,
                                                 [this](const envdesign::job_t &j) { on_job(j); });
     }

@@ -22,9 +22,9 @@ design::TaskExplicability solved(double ie) {
 class EvaluationStoresTest : public ::testing::Test {
 protected:
     design::DesignProblem restaurant =
-        design::load_design_problem(in_repo("examples/restaurant/c-two-tasks-t10.textproto"));
+        spec::load_design_problem(in_repo("examples/restaurant/c-two-tasks-t10.textproto"));
     design::DesignProblem blocks =
-        design::load_design_problem(in_repo("examples/blocksworld/design.textproto"));
+        spec::load_design_problem(in_repo("examples/blocksworld/design.textproto"));
 };
 
 TEST_F(EvaluationStoresTest, SameModelsShareAStoreWhateverTheDistribution) {

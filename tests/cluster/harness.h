@@ -8,13 +8,13 @@
 #include "cluster/planner.h"
 #include "cluster/result_message.h"
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/explanation.h"
 #include "design/local_evaluator.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "result_format.h"
-#include "spec_bundle.h"
+#include "spec/design_spec.h"
+#include "spec/spec_bundle.h"
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
@@ -40,7 +40,7 @@ inline std::string in_repo(const std::string &relative) {
 // SPEC.md's JSON of a run with the in-process evaluator (what `envdesign design --json`
 // prints), the reference a networked run must equal.
 inline nlohmann::json local_result(const std::string &spec_path) {
-    design::DesignProblem problem = design::load_design_problem(spec_path);
+    design::DesignProblem problem = spec::load_design_problem(spec_path);
     design::LocalEvaluator evaluator(problem, 2);
     design::DesignSearchOptions options;
     options.max_design_size = problem.max_design_size;
@@ -71,7 +71,7 @@ inline envdesign::design_request_t request_of(const std::string &spec_path, std:
     r.utime = 1;
     r.request_id = id;
     r.sender = "test-client";
-    r.spec = client::bundle_spec(spec_path);
+    r.spec = spec::bundle_spec(spec_path);
     r.time_limit_s = -1;
     r.max_design_size = -1;
     return r;
@@ -88,7 +88,6 @@ public:
         : bus_("memq://", quiet_logger()) {
         CoordinatorConfig c;
         c.instance = "coordinator";
-        c.work_dir = std::filesystem::temp_directory_path().string();
         c.pool.planner_timeout_s = 0.5;
         c.pool.lost_after_s = 0.15;
         if (configure)
@@ -97,7 +96,6 @@ public:
         for (int i = 0; i < planners; ++i) {
             PlannerConfig p;
             p.instance = "planner-" + std::to_string(i);
-            p.work_dir = c.work_dir;
             p.workers = workers;
             p.heartbeat_period_s = 0.05;
             planners_.push_back(std::make_unique<Planner>(bus_, p));

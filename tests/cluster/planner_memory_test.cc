@@ -14,7 +14,6 @@ protected:
     PlannerMemoryTest() : bus_("memq://", quiet_logger()) {
         PlannerConfig config;
         config.instance = "planner-0";
-        config.work_dir = std::filesystem::temp_directory_path().string();
         planner_ = std::make_unique<Planner>(bus_, config);
         answers_ = bus_.subscribe<envdesign::evaluation_t>(
             bus::EVALUATION, [this](const envdesign::evaluation_t &e) { got_.push_back(e); });

@@ -4,11 +4,11 @@
 
 #include "bus/codec.h"
 #include "cluster/result_message.h"
-#include "design/design_spec.h"
 #include "design/explanation.h"
 #include "design/local_evaluator.h"
 #include "plan_diff.h"
 #include "result_format.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@ namespace envdesign::cluster {
 namespace {
 
 envdesign::design_result_t explained_restaurant() {
-    design::DesignProblem problem = design::load_design_problem(
+    design::DesignProblem problem = spec::load_design_problem(
         std::string(ENVDESIGN_TEST_DATA_ROOT) + "/examples/restaurant/c-two-tasks-t10.textproto");
     design::LocalEvaluator local(problem, 1);
     design::EvaluationLog log(problem, local);

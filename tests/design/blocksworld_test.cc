@@ -2,14 +2,16 @@
 // new predicate, and a modification that changes no ground task.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 const std::string SPEC = std::string(ENVDESIGN_EXAMPLES) + "/blocksworld/design.textproto";

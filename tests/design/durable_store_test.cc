@@ -3,10 +3,10 @@
 // a file another store wrote.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/evaluation_record.h"
 #include "design/local_evaluator.h"
 #include "design/stored_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,8 @@
 #include <unistd.h>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 namespace fs = std::filesystem;

@@ -4,13 +4,13 @@
 // with no bound, on seeded generated design problems.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/evaluation_record.h"
 #include "design/explaining.h"
 #include "design/local_evaluator.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +21,8 @@
 #include <tuple>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 const double H = (1 - std::pow(0.9, 10)) / (1 - 0.9); // discounted horizon, gamma 0.9, T 10

@@ -3,16 +3,18 @@
 // checked against re-running the exact search at other horizons and alphas.
 
 #include "design/break_even.h"
-#include "design/design_spec.h"
 #include "design/evaluate_design.h"
 #include "design/explanation.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 const std::string SPEC = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/c-two-tasks-t10.textproto";

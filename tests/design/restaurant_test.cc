@@ -4,15 +4,17 @@
 // evaluating all 64 configurations without any bound.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/local_evaluator.h"
 #include "design/relevance.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 const std::string DIR = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/";

@@ -3,12 +3,14 @@
 #include "design/stored_evaluator.h"
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 const std::string SPEC =

@@ -4,12 +4,14 @@
 // hitting-set phase proves the answer (on); the exhaustive search is the reference.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 class WarehouseAgreement : public ::testing::TestWithParam<const char *> {};

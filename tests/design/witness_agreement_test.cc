@@ -34,9 +34,9 @@
 // removed.
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/explicability.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
 
@@ -60,6 +60,8 @@
 #include <vector>
 
 namespace envdesign::design {
+
+using spec::load_design_problem;
 namespace {
 
 namespace fs = std::filesystem;

@@ -13,8 +13,8 @@
 #include "bus/log.h"
 
 #include "design/design_search.h"
-#include "design/design_spec.h"
 #include "design/local_evaluator.h"
+#include "spec/design_spec.h"
 
 #include <envdesign/client/client.h>
 
@@ -33,7 +33,7 @@ struct Run {
 };
 
 Run local_run(const std::string &spec, int workers) {
-    design::DesignProblem problem = design::load_design_problem(spec);
+    design::DesignProblem problem = spec::load_design_problem(spec);
     design::LocalEvaluator evaluator(problem, workers);
     design::DesignSearchOptions options;
     options.max_design_size = problem.max_design_size;

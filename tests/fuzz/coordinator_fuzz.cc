@@ -21,7 +21,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     bus::Bus bus("memq://", fuzz::quiet_logger());
     cluster::CoordinatorConfig config;
     config.instance = "coordinator";
-    config.work_dir = std::filesystem::temp_directory_path().string();
     config.max_active = 2;
     config.max_waiting = 2;
     cluster::Coordinator coordinator(bus, config);

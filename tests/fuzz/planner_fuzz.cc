@@ -20,7 +20,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     bus::Bus bus("memq://", fuzz::quiet_logger());
     cluster::PlannerConfig config;
     config.instance = "planner"; // what make_seeds.cc addresses jobs to
-    config.work_dir = std::filesystem::temp_directory_path().string();
     config.workers = 1;
     cluster::Planner planner(bus, config);
     for (const auto &record : fuzz::read_records(data, size, 2)) {

@@ -10,8 +10,9 @@
 #include "envdesign/design_progress_t.hpp"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
+#include "pddl/parse_error.h"
 #include "result_format.h"
-#include "spec_bundle.h"
+#include "spec/spec_bundle.h"
 
 #include <cstdio>
 #include <optional>
@@ -207,8 +208,8 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
                               "' or heuristic '" + options.heuristic + "'");
     design_request_t request{};
     try {
-        request.spec = bundle_spec(spec_path);
-    } catch (const SpecError &e) {
+        request.spec = spec::bundle_spec(spec_path);
+    } catch (const pddl::ParseError &e) {
         return failure(2, e.what());
     }
     request.sender = bus::instance_name("client");

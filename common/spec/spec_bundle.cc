@@ -1,18 +1,15 @@
-#include "spec_bundle.h"
+#include "spec/spec_bundle.h"
 
 #include "pddl/input_file.h"
+#include "spec/file_source.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cctype>
-#include <filesystem>
-#include <optional>
 #include <set>
 
-namespace envdesign::client {
+namespace envdesign::spec {
 namespace {
-
-namespace fs = std::filesystem;
 
 // Protobuf text format, only as far as finding string fields and nesting needs.
 class TextScanner {
@@ -154,17 +151,6 @@ std::vector<NamedPath> json_paths(const std::string &text) {
     return found;
 }
 
-// The bounded reader the engine uses (no FIFO, device or oversized file); nullopt with
-// `why` set when it refuses.
-std::optional<std::string> read_file(const fs::path &path, std::string &why) {
-    try {
-        return pddl::read_input_file(path.string());
-    } catch (const pddl::ParseError &e) {
-        why = e.message();
-        return std::nullopt;
-    }
-}
-
 bool ends_with(const std::string &s, const std::string &suffix) {
     return s.size() >= suffix.size() &&
            s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -179,30 +165,23 @@ std::vector<NamedPath> named_paths(const std::string &text, bool json) {
 envdesign::spec_t bundle_spec(const std::string &spec_path) {
     envdesign::spec_t spec;
     spec.name = spec_path;
-    std::string why;
-    auto text = read_file(spec_path, why);
-    if (!text)
-        throw SpecError(spec_path + ":0:0: error: " + why);
-    spec.text = std::move(*text);
+    spec.text = pddl::read_input_file(spec_path);
+    DiskFiles disk(spec_path);
     std::set<std::string> seen;
     for (const NamedPath &named : named_paths(spec.text, ends_with(spec_path, ".json"))) {
         if (!seen.insert(named.path).second)
             continue;
-        fs::path path = fs::path(named.path).is_absolute()
-                            ? fs::path(named.path)
-                            : fs::path(spec_path).parent_path() / named.path;
         envdesign::spec_file_t file;
         file.path = named.path;
-        auto content = read_file(path, why);
-        if (!content)
-            throw SpecError(spec_path + ":" + std::to_string(named.line) + ":" +
-                            std::to_string(named.column) + ": error: cannot open '" + named.path +
-                            "' (" + named.field + ", looked for " + path.string() + "): " + why);
-        file.content = std::move(*content);
+        try {
+            file.content = disk.read(named.path, named.field).content;
+        } catch (const MissingFile &e) {
+            throw pddl::ParseError({spec_path, named.line, named.column}, e.what());
+        }
         spec.files.push_back(std::move(file));
     }
     spec.num_files = static_cast<std::int16_t>(spec.files.size());
     return spec;
 }
 
-} // namespace envdesign::client
+} // namespace envdesign::spec

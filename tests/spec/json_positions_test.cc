@@ -2,15 +2,15 @@
 // errors naming the line and column, before any recursive reader sees them.
 
 #include "../cli/run_command.h"
-#include "design/json_positions.h"
-#include "design/spec_reader.h"
+#include "spec/json_positions.h"
+#include "spec/spec_reader.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 namespace {
 
 std::string nested_arrays(int depth) {
@@ -72,4 +72,4 @@ TEST(JsonLimits, TheCliExitsTwoNamingTheFile) {
 }
 
 } // namespace
-} // namespace envdesign::design
+} // namespace envdesign::spec

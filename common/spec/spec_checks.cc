@@ -1,4 +1,4 @@
-#include "design/spec_checks.h"
+#include "spec/spec_checks.h"
 
 #include "design/compilation.h"
 #include "design/configuration.h"
@@ -7,8 +7,18 @@
 #include <map>
 #include <optional>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 namespace {
+
+using design::ApplyMode;
+using design::CompiledTask;
+using design::DesignProblem;
+using design::Edit;
+using design::EditKind;
+using design::Model;
+using design::ModelPair;
+using design::Modification;
+using design::NotPresentError;
 
 using pddl::ParseError;
 
@@ -176,4 +186,4 @@ void check_design_problem(const DesignProblem &problem, const SpecFile &spec) {
     check_predicate_declarations(problem);
 }
 
-} // namespace envdesign::design
+} // namespace envdesign::spec

@@ -1,13 +1,17 @@
 // Reading design problem files: text format and JSON give the same problem; fields are
 // located for messages.
 
-#include "design/design_spec.h"
-#include "design/spec_reader.h"
+#include "spec/design_spec.h"
+#include "spec/spec_reader.h"
 
 #include <gtest/gtest.h>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 namespace {
+
+using design::DesignProblem;
+using design::Distance;
+using design::Model;
 
 const std::string EXAMPLES = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/";
 const std::string DATA = std::string(ENVDESIGN_TEST_DATA) + "/design/";
@@ -75,4 +79,4 @@ TEST(Spec, ErrorsNameTheLineOfTheEdit) {
 }
 
 } // namespace
-} // namespace envdesign::design
+} // namespace envdesign::spec

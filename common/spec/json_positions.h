@@ -7,7 +7,7 @@
 #include <map>
 #include <string>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 
 // Maps "task[1].human_problem"-style paths to the position of the key (or, for array
 // elements, of the element). Keys are converted to snake_case, so "humanProblem" and
@@ -28,4 +28,4 @@ void check_json_limits(const std::string &text, const std::string &file);
 // lowerCamelCase -> snake_case ("addPrecondition" -> "add_precondition").
 std::string snake_case(const std::string &name);
 
-} // namespace envdesign::design
+} // namespace envdesign::spec

@@ -1,7 +1,7 @@
-#include "design/spec_reader.h"
+#include "spec/spec_reader.h"
 
-#include "design/json_positions.h"
 #include "pddl/input_file.h"
+#include "spec/json_positions.h"
 
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
@@ -12,7 +12,7 @@
 #include <sstream>
 #include <vector>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 namespace {
 
 namespace gp = google::protobuf;
@@ -224,4 +224,4 @@ SpecFile read_spec_file(const std::string &path) {
     return read_spec_text(pddl::read_input_file(path), path);
 }
 
-} // namespace envdesign::design
+} // namespace envdesign::spec

@@ -1,11 +1,11 @@
-#include "design/json_positions.h"
+#include "spec/json_positions.h"
 
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 namespace {
 
 // Line and column (UTF-8 characters, not bytes) over a walk through JSON text.
@@ -199,4 +199,4 @@ std::map<std::string, pddl::Location> index_json_positions(const std::string &te
     return out;
 }
 
-} // namespace envdesign::design
+} // namespace envdesign::spec

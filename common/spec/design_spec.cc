@@ -1,19 +1,22 @@
-#include "design/design_spec.h"
+#include "spec/design_spec.h"
 
-#include "design/compilation.h"
-#include "design/spec_checks.h"
 #include "pddl/parser.h"
+#include "spec/spec_checks.h"
 
 #include <cmath>
-#include <filesystem>
 #include <set>
 #include <sstream>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 namespace {
 
+using design::DesignProblem;
+using design::DesignTask;
+using design::Distance;
+using design::Modification;
+using design::ObjectiveWeights;
+using design::RobotBehaviour;
 using pddl::ParseError;
-namespace fs = std::filesystem;
 
 RobotBehaviour behaviour_from_proto(proto::DesignProblem::RobotBehaviour behaviour) {
     switch (behaviour) {
@@ -30,15 +33,17 @@ RobotBehaviour behaviour_from_proto(proto::DesignProblem::RobotBehaviour behavio
 
 class Loader {
 public:
-    explicit Loader(const SpecFile &spec) : spec_(spec), m_(spec.message) {}
+    Loader(const SpecFile &spec, const FileSource &files)
+        : spec_(spec), m_(spec.message), files_(files) {}
 
-    DesignProblem load() {
+    DesignProblem load(Checks checks) {
         problem_.file = spec_.path;
         load_domains();
         load_tasks();
         load_weights();
         load_modifications();
-        check_design_problem(problem_, spec_);
+        if (checks == Checks::FULL)
+            check_design_problem(problem_, spec_);
         return std::move(problem_);
     }
 
@@ -47,16 +52,14 @@ private:
         throw ParseError(spec_.at(field), message);
     }
 
-    std::string resolve(const std::string &field, const std::string &relative) const {
-        if (relative.empty())
+    SourceFile read(const std::string &field, const std::string &path) const {
+        if (path.empty())
             fail(field, "'" + field + "' is required");
-        fs::path path = fs::path(relative).is_absolute()
-                            ? fs::path(relative)
-                            : fs::path(spec_.path).parent_path() / relative;
-        if (!fs::is_regular_file(path))
-            fail(field, "cannot open '" + relative + "' (" + field + ", looked for " +
-                            path.string() + ")");
-        return path.string();
+        try {
+            return files_.read(path, field);
+        } catch (const MissingFile &e) {
+            fail(field, e.what());
+        }
     }
 
     // A PDDL error names the PDDL file; the note says which line of the spec led there.
@@ -70,16 +73,16 @@ private:
     }
 
     void load_domains() {
-        std::string robot = resolve("robot_domain", m_.robot_domain());
-        problem_.robot_domain =
-            load_pddl("robot_domain", [&] { return pddl::parse_domain_file(robot); });
+        SourceFile robot = read("robot_domain", m_.robot_domain());
+        problem_.robot_domain = load_pddl(
+            "robot_domain", [&] { return pddl::parse_domain_text(robot.content, robot.name); });
         if (m_.human_domain().empty()) {
             problem_.human_domain = problem_.robot_domain;
             return;
         }
-        std::string human = resolve("human_domain", m_.human_domain());
-        problem_.human_domain =
-            load_pddl("human_domain", [&] { return pddl::parse_domain_file(human); });
+        SourceFile human = read("human_domain", m_.human_domain());
+        problem_.human_domain = load_pddl(
+            "human_domain", [&] { return pddl::parse_domain_text(human.content, human.name); });
     }
 
     void load_tasks() {
@@ -101,17 +104,17 @@ private:
                 fail(at + ".probability",
                      "the probability of task '" + t.name() + "' must be a non-negative number");
             total += task.probability;
-            std::string file = resolve(at + ".problem", t.problem());
+            SourceFile file = read(at + ".problem", t.problem());
             task.robot_problem = load_pddl(at + ".problem", [&] {
-                return pddl::parse_problem_file(file, problem_.robot_domain);
+                return pddl::parse_problem_text(file.content, file.name, problem_.robot_domain);
             });
             std::string human_field =
                 at + (t.human_problem().empty() ? ".problem" : ".human_problem");
-            std::string human_file =
-                t.human_problem().empty() ? file : resolve(human_field, t.human_problem());
+            SourceFile human_file =
+                t.human_problem().empty() ? file : read(human_field, t.human_problem());
             task.human_problem = load_pddl(human_field, [&] {
-                return pddl::parse_problem_file(human_file, problem_.human_domain,
-                                                problem_.robot_domain.name);
+                return pddl::parse_problem_text(human_file.content, human_file.name,
+                                                problem_.human_domain, problem_.robot_domain.name);
             });
             problem_.tasks.push_back(std::move(task));
         }
@@ -174,6 +177,7 @@ private:
 
     const SpecFile &spec_;
     const proto::DesignProblem &m_;
+    const FileSource &files_;
     DesignProblem problem_;
 };
 
@@ -204,10 +208,17 @@ std::optional<std::string> probability_warning(const SpecFile &spec) {
     return text.str();
 }
 
-DesignProblem load_design_problem(const SpecFile &spec) { return Loader(spec).load(); }
+design::DesignProblem load_design_problem(const SpecFile &spec, const FileSource &files,
+                                          Checks checks) {
+    return Loader(spec, files).load(checks);
+}
 
-DesignProblem load_design_problem(const std::string &spec_path) {
+design::DesignProblem load_design_problem(const SpecFile &spec) {
+    return load_design_problem(spec, DiskFiles(spec.path));
+}
+
+design::DesignProblem load_design_problem(const std::string &spec_path) {
     return load_design_problem(read_spec_file(spec_path));
 }
 
-} // namespace envdesign::design
+} // namespace envdesign::spec

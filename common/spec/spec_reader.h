@@ -10,13 +10,13 @@
 //   pddl::Location where = spec.at("modification[1].edit[0].remove_init");
 //   // where.to_string() == "examples/.../c-two-tasks-t10.textproto:14:10"
 
-#include "design/proto/design_problem.pb.h"
 #include "pddl/parse_error.h"
+#include "spec/proto/design_problem.pb.h"
 
 #include <memory>
 #include <string>
 
-namespace envdesign::design {
+namespace envdesign::spec {
 
 // Where each field of one spec file is written.
 class SpecLocations {
@@ -44,4 +44,4 @@ SpecFile read_spec_file(const std::string &path);
 // chosen by its extension.
 SpecFile read_spec_text(const std::string &text, const std::string &path);
 
-} // namespace envdesign::design
+} // namespace envdesign::spec
