@@ -106,7 +106,15 @@ public:
           requests_(bus_.subscribe<task_distribution_t>(
               bus::REEVALUATE, [this](const task_distribution_t &m) { requests.push_back(m); })),
           results_(bus_.subscribe<envdesign::design_result_t>(
-              bus::RESULT, [this](const envdesign::design_result_t &m) { results.push_back(m); })),
+              bus::RESULT,
+              [this](const envdesign::design_result_t &m) {
+                  // A repeat: the bridge sent a request again (its clock runs 20x fast here)
+                  // and the coordinator answered it from what it had closed.
+                  for (const auto &r : results)
+                      if (r.request_id == m.request_id && r.client == m.client)
+                          return;
+                  results.push_back(m);
+              })),
           coordinator_(mode == Mode::COORDINATOR ? coordinator_on(bus_) : nullptr),
           planner_(mode == Mode::COORDINATOR ? planner_on(bus_) : nullptr),
           bridge_(bus_, config(threshold, mode), queue_, clock_) {}
