@@ -14,6 +14,8 @@ const char *to_string(Reason reason) {
         return "drift";
     case Reason::REWEIGH:
         return "reweigh";
+    case Reason::UNEVALUATED:
+        return "unevaluated";
     }
     return "?";
 }
@@ -180,6 +182,15 @@ void ArrivalTracker::reweighed(const std::string &id, const Distribution &refere
     if (it == problems_.end() || it->second.detector.state() == DriftState::PENDING)
         return;
     it->second.detector.rebase(reference, it->second.estimator.estimate());
+}
+
+std::optional<Request> ArrivalTracker::unevaluated(const std::string &id, double now) {
+    auto it = problems_.find(id);
+    if (it == problems_.end() || !it->second.proposed.empty() ||
+        it->second.estimator.effective_samples() < config_.drift.min_samples ||
+        !it->second.detector.force(now, it->second.estimator.estimate()))
+        return std::nullopt;
+    return make_request(it->second, Reason::UNEVALUATED);
 }
 
 std::optional<ProblemStatus> ArrivalTracker::status(const std::string &id) const {

@@ -55,10 +55,11 @@ struct NewTask {
 };
 
 enum class Reason {
-    INITIAL,  // the design for the spec's D, asked for when tracking starts
-    DRIFT,    // TV(reference, estimate) passed the threshold
-    NEW_TASK, // a new task came with its problem
-    REWEIGH,  // the estimate changed: re-weigh stored evaluations, no planner (reweighs_due)
+    INITIAL,     // the design for the spec's D, asked for when tracking starts
+    DRIFT,       // TV(reference, estimate) passed the threshold
+    NEW_TASK,    // a new task came with its problem
+    REWEIGH,     // the estimate changed: re-weigh stored evaluations, no planner (reweighs_due)
+    UNEVALUATED, // a re-weighting needs configurations never evaluated: plan them now
 };
 const char *to_string(Reason reason);
 
@@ -141,6 +142,13 @@ public:
     // the drift detector measures from `reference` (ignored while a request is pending: its
     // answer sets the reference).
     void reweighed(const std::string &id, const Distribution &reference);
+    // A re-weighting for the estimate could not finish from stored evaluations: a request
+    // (UNEVALUATED) for the estimate now, whatever the distance, unless one is pending or the
+    // estimate rests on fewer than min_samples (the detector's evidence rule). Not
+    // gated by the threshold: every evaluation it plans is stored, so such requests end once
+    // the configurations the estimates need are evaluated, and until then the design in
+    // force would be stale for as long as the estimate takes to move `threshold`.
+    std::optional<Request> unevaluated(const std::string &id, double now);
 
     std::optional<ProblemStatus> status(const std::string &id) const;
     std::vector<std::string> problem_ids() const;

@@ -211,8 +211,10 @@ void Bridge::reweigh(double t) {
 
 void Bridge::on_reweighed(const Answer &answer) {
     ++reweighs_;
-    if (!answer.reference) { // needs planners: the drift threshold decides when
+    if (!answer.reference) { // needs planners: they run now (tracker.h, unevaluated)
         ++reweigh_planning_;
+        if (auto request = tracker_.unevaluated(answer.problem_id, now()))
+            send(*request);
         return;
     }
     tracker_.reweighed(answer.problem_id, *answer.reference);

@@ -14,7 +14,8 @@
 //   reference the drift detector compares the estimate with.
 //   --redesign local: every change of an estimate (at most every reweigh_interval_s) is
 //   also re-weighed over the stored evaluations (no planner); when that proves another
-//   design optimal it is published at once, so the drift threshold only gates planning.
+//   design optimal it is published at once; when it needs evaluations the store lacks, a
+//   re-evaluation is asked for at once (tracker.h, unevaluated).
 //
 // Threads: the reader thread (config.reader_thread; else the caller's pump()) takes samples and
 // feeds the tracker; the bus thread (the one calling bus.handle() and tick()) takes results; the

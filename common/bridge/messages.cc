@@ -26,6 +26,7 @@ std::int8_t reason_code(arrivals::Reason reason) {
         return task_distribution_t::REASON_NEW_TASK;
     case arrivals::Reason::DRIFT:
     case arrivals::Reason::REWEIGH: // the estimate moved; no message of its own
+    case arrivals::Reason::UNEVALUATED:
         return task_distribution_t::REASON_DRIFT;
     }
     return task_distribution_t::REASON_NONE;

@@ -240,6 +240,30 @@ TEST(BridgeCore, ScriptedDriftThroughACoordinatorGivesTheOptimalDesign) {
     EXPECT_EQ(rig.bridge().stats().reweighs, 0); // the store is the coordinator's
 }
 
+// Far below the threshold (TV 0.8 < 0.95), the re-weighting for 0.1 serve-g1 needs the
+// barrier evaluated, which the store lacks: the bridge asks for it at once instead of keeping
+// the stale design until the estimate moves 0.95 (the soak saw 1.5 s to 72 s of staleness).
+// Once stored, going back is a re-weighting again, with no request.
+TEST(BridgeCore, AReweighingThatNeedsPlannersAsksForThemAtOnce) {
+    Rig rig(0.95);
+    ASSERT_TRUE(rig.wait_results(1));
+    rig.arrive("1222222222");
+    ASSERT_TRUE(rig.wait_results(2));
+    ASSERT_EQ(rig.requests.size(), 2u);
+    EXPECT_EQ(rig.requests[1].reason, task_distribution_t::REASON_DRIFT);
+    Optimum at_01 = exhaustive(0.1);
+    EXPECT_EQ(rig.results[1].design, at_01.design);
+    EXPECT_NEAR(rig.results[1].best.objective, at_01.objective, 1e-9);
+    EXPECT_GE(rig.bridge().stats().reweigh_planning, 1);
+
+    rig.arrive("1111111112"); // 0.9 serve-g1 again: {} from the store
+    ASSERT_TRUE(rig.wait_results(3));
+    rig.settle();
+    EXPECT_EQ(rig.requests.size(), 2u);
+    EXPECT_EQ(rig.results[2].design, exhaustive(0.9).design);
+    EXPECT_NE(rig.results[2].change.find("re-weighted"), std::string::npos);
+}
+
 TEST(BridgeCore, BelowTheThresholdReweighingBringsTheOptimalDesignWithoutARequest) {
     Rig rig(0.75);
     ASSERT_TRUE(rig.wait_results(1));
