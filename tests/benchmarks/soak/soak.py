@@ -119,6 +119,8 @@ def read_watch(path):
                 continue
             if m.get("kind") == "distribution" and m.get("problem_id") == "restaurant":
                 probs = tuple(float(m["probabilities"].get(t, 0)) for t in TASKS)
+                if sum(probs) <= 0:  # no arrival yet: no estimate to check against
+                    continue
                 estimates.append((m["utime"] / 1e6, probs, tuple(m["design"]), m["samples"]))
             elif m.get("kind") == "result":
                 results.append(m)
@@ -338,6 +340,7 @@ set output 'soak.png'
 set multiplot layout 2,1 title 'envdesign soak: every process, sampled each minute'
 set key outside right
 set grid
+set yrange [0:*]
 set xlabel 'minute'
 set ylabel 'RSS (MiB)'
 plot %s
