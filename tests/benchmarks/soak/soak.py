@@ -264,6 +264,16 @@ def design_check(estimates, envdesign, workdir, drift_minutes, window_s=1.0):
             if want.isdisjoint(opt(estimates[j][1])):  # the target moved away
                 superseded += 1
                 break
+    # Every change of the design in force, beside the estimate and its independent optimum.
+    with open(os.path.join(workdir, "design-changes.csv"), "w") as out:
+        out.write("seconds,p_serve_g1,design_before,design_after,optimal_for_estimate\n")
+        t0 = estimates[started][0] if started is not None else 0
+        for i in range(max(started or 0, 1), len(estimates)):
+            before, after = estimates[i - 1][2], estimates[i][2]
+            if before != after:
+                out.write("%.3f,%.3f,{%s},{%s},%s\n" % (
+                    estimates[i][0] - t0, estimates[i][1][0], " ".join(before), " ".join(after),
+                    " | ".join("{%s}" % " ".join(d) for d in sorted(opt(estimates[i][1])))))
     return {
         "messages": len(estimates),
         "distinct_estimates": len({key_of(e[1]) for e in estimates}),
