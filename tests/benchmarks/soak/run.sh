@@ -3,6 +3,7 @@
 #
 #   tests/benchmarks/soak/run.sh [--minutes M] [--out DIR] [--drift-minutes D]
 #       [--kill-minutes K] [--rate R] [--request-every S] [--port P] [--domain N] [--bin DIR]
+#       [--profile steps|ramps]
 #
 # Starts, on loopback (LCM udpm on its own port, DDS on its own domain): a coordinator
 # (--state-dir), 2 planners, a bridge (--redesign local, --state-dir) and an arrivals
@@ -16,7 +17,7 @@ set -u
 
 SOURCE=$(cd "$(dirname "$0")/../../.." && pwd)
 ARGS="$*"
-MINUTES=60 DRIFT=5 KILL=10 RATE=50 EVERY=3 PORT=7990 DOMAIN=199
+MINUTES=60 DRIFT=5 KILL=10 RATE=50 EVERY=3 PORT=7990 DOMAIN=199 PROFILE=steps
 BIN=$SOURCE/build/bin OUT=
 while [ $# -gt 0 ]; do
     case $1 in
@@ -29,8 +30,9 @@ while [ $# -gt 0 ]; do
     --port) PORT=$2 ;;
     --domain) DOMAIN=$2 ;;
     --bin) BIN=$2 ;;
+    --profile) PROFILE=$2 ;;
     *) echo "usage: $0 [--minutes M] [--out DIR] [--drift-minutes D] [--kill-minutes K]" \
-        "[--rate R] [--request-every S] [--port P] [--domain N] [--bin DIR]" >&2; exit 2 ;;
+        "[--rate R] [--request-every S] [--port P] [--domain N] [--bin DIR] [--profile steps|ramps]" >&2; exit 2 ;;
     esac
     shift 2 || { echo "$0: $1 needs a value" >&2; exit 2; }
 done
@@ -51,12 +53,12 @@ EVENTS=$OUT/events.log
 event() { echo "$(date -u +%FT%T.%3NZ) $*" | tee -a "$EVENTS"; }
 
 python3 "$PY" replay "$OUT/arrivals.csv" --minutes "$MINUTES" --drift-minutes "$DRIFT" \
-    --rate "$RATE" || exit 2
+    --rate "$RATE" --profile "$PROFILE" || exit 2
 cat >"$OUT/run.json" <<EOF
 {"started": "$(date -u +%FT%TZ)", "command": "tests/benchmarks/soak/run.sh $ARGS",
  "commit": "$(git -C "$SOURCE" rev-parse --short HEAD)$(git -C "$SOURCE" diff --quiet HEAD -- common services clients || echo +dirty)",
  "machine": "$(uname -sm), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(awk '/MemTotal/ {printf "%.0f GiB", $2/1048576}' /proc/meminfo)",
- "minutes": $MINUTES, "drift_minutes": $DRIFT, "kill_minutes": $KILL, "rate": $RATE,
+ "minutes": $MINUTES, "profile": "$PROFILE", "drift_minutes": $DRIFT, "kill_minutes": $KILL, "rate": $RATE,
  "request_every": $EVERY, "lcm_url": "$URL", "dds_domain": $DOMAIN}
 EOF
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Helper of tests/benchmarks/soak/run.sh (issue 11's 1-hour soak).
 
-  soak.py replay OUT.csv --minutes M --drift-minutes D --rate R --seed S
-      the arrivals: R a second, the task mix changing every D minutes (MIXES, in turn)
+  soak.py replay OUT.csv --minutes M --drift-minutes D --rate R --seed S [--profile P]
+      the arrivals: R a second, the task mix changing every D minutes (MIXES, in turn;
+      --profile ramps: moving linearly from one phase's mix to the next)
   soak.py request-spec OUT.textproto --seed S
       one client request: a variant of the drift spec (weights, mix, modifications)
   soak.py check DIR --drift-minutes D [--envdesign BIN]
@@ -63,6 +64,8 @@ def cmd_replay(a):
         out.write("task\n")
         for i in range(total):
             p = mix_of_phase(i // per_phase)
+            if a.profile == "ramps":  # from this phase's mix to the next one's, linearly
+                p += (mix_of_phase(i // per_phase + 1) - p) * (i % per_phase) / per_phase
             out.write((TASKS[0] if rng.random() < p else TASKS[1]) + "\n")
 
 
@@ -474,6 +477,9 @@ def main():
     r.add_argument("--drift-minutes", type=float, required=True)
     r.add_argument("--rate", type=float, default=50)
     r.add_argument("--seed", type=int, default=11)
+    r.add_argument("--profile", choices=["steps", "ramps"], default="steps",
+                   help="steps: the mix jumps at each drift; ramps: it moves linearly to the "
+                   "next phase's mix over each phase (a slow drift)")
     s = sub.add_parser("request-spec")
     s.add_argument("out")
     s.add_argument("--seed", type=int, required=True)
