@@ -53,6 +53,10 @@ ELSEWHERE = [
     ("build/bin/bridge_benchmark", "benchmark command (~15 s), not CI"),
     ("build/bin/durable_benchmark", "benchmark command, not CI"),
     ("cmake --build build -j2 --target durable_benchmark", "builds the benchmark above"),
+    ("bash tests/benchmarks/soak/run.sh", "the 1-hour soak (a command, not CI): "
+                                          "docs/results/soak.md"),
+    ("cmake --build build -j2 --target envdesign envdesign-coordinator",
+     "builds the soak's binaries (docs/results/soak.md)"),
     ("sudo ", "installs system files (systemd, sysctl): deploy/LAN.md, by hand"),
 ]
 # Commands the docs show failing on purpose, with the exit code they give.
