@@ -19,12 +19,14 @@ does what the CSV does not hold yet.
   --ours   `envdesign plan`, limited to the same CPU seconds (RLIMIT_CPU set here, so the
            load of a shared machine counts against neither planner); solved plans are
            checked with our validator.
+  --ours-where-fd-solved   ours only where Fast Downward solved (when time is short).
   --rerun-limit S   ours again with S CPU seconds on every instance Fast Downward solved
            and ours did not solve within the first limit.
 The work goes breadth-first: instance 1 (by problem file name) of every domain, then
 instance 2, and so on, so that coverage is even when the run is stopped. Within a domain,
 a planner skips the rest after --skip-after consecutive instances it did not solve (ours
-still runs on every instance Fast Downward solved). Problems whose domain file is absent
+still runs on every instance Fast Downward solved). Fast Downward does not run on instances
+our reader refuses (constructs outside the fragment: nothing to compare). Problems whose domain file is absent
 (a checkout that lacks blobs) are rows with verdict `missing`.
 
 Prints and writes (--markdown) one row per domain and a summary line, from the whole CSV.
@@ -212,14 +214,15 @@ def run(args, inside, table):
                 if args.read and not row.get("verdict"):
                     row["verdict"], row["reason"] = read_verdict(args.binary, args.collection,
                                                                  domain, problem, work)
-                if args.fd and not row.get("fd_status") and \
-                        not streak_broken(before, "fd_status", args.skip_after):
+                if args.fd and not row.get("fd_status") and row.get("verdict") != "refused" \
+                        and not streak_broken(before, "fd_status", args.skip_after):
                     row.update(run_fd(args.fd, args.binary, domain, problem, args.time_limit,
                                       work))
                 fd_solved = row.get("fd_status") == "solved"
                 if args.ours and not row.get("our_status") and row.get("verdict") != "refused" \
-                        and (fd_solved or not streak_broken(before, "our_status",
-                                                            args.skip_after)):
+                        and (fd_solved or (not args.ours_where_fd_solved and
+                                           not streak_broken(before, "our_status",
+                                                             args.skip_after))):
                     row.update(run_ours(args.binary, domain, problem, args.time_limit, work))
                 if args.rerun_limit and fd_solved and row.get("our_status") == "limit" and \
                         float(row.get("our_limit") or 0) < args.rerun_limit:
@@ -273,6 +276,8 @@ def main():
     parser.add_argument("--read", action="store_true", help="the reader's verdict")
     parser.add_argument("--ours", action="store_true", help="our planner")
     parser.add_argument("--fd", help="fast-downward.py of a build outside the repository")
+    parser.add_argument("--ours-where-fd-solved", action="store_true",
+                        help="ours only on instances Fast Downward solved")
     parser.add_argument("--rerun-limit", type=float, default=0)
     parser.add_argument("--time-limit", type=float, default=10, help="CPU seconds")
     parser.add_argument("--skip-after", type=int, default=3)
