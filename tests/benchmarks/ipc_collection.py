@@ -125,7 +125,7 @@ def run_ours(binary, domain, problem, limit, work):
         row["our_status"] = "refused"
     elif proc.returncode == 0 and cost and os.path.exists(plan_file):
         row["our_status"] = "solved"
-        row["our_cost"] = f"{float(cost.group(1)):g}"
+        row["our_cost"] = cost.group(1)
         ok, _ = validate(binary, domain, problem, plan_file)
         row["valid"] = "yes" if ok else "no"
     elif proc.returncode == 3:
