@@ -1,30 +1,56 @@
 #!/usr/bin/env python3
-"""Our PDDL reader over a checkout of the public benchmark collection (issue 12).
+"""Our PDDL reader and planner over a checkout of the public benchmark collection (issue 12).
 
-  python3 tests/benchmarks/ipc_collection.py /tmp/ipc/bench [--time-limit 10]
-      [--per-domain N] [--fd /tmp/fd/fast-downward.py] [--markdown OUT.md]
+  python3 tests/benchmarks/ipc_collection.py /tmp/ipc/bench --csv RESULTS.csv \
+      [--read] [--ours] [--fd /tmp/fd/fast-downward.py] [--rerun-limit 120] \
+      [--time-limit 10] [--skip-after 3] [--per-domain N] [--markdown OUT.md]
 
 The collection is github.com/aibasel/downward-benchmarks (the search tool's `fetch`
-brings it; never commit it). For every domain whose declared requirements fall in our
-fragment (STRIPS, typing, negative preconditions, equality, action costs), each instance
-goes through `envdesign plan --json`: exit code 2 is a refusal (its first line is the
-reason); anything else means the files were read. Solved plans are checked with our
-validator. With --fd, Fast Downward's astar(lmcut()) runs on the same instance with the
-same time limit, and its cost is compared with ours. Prints one Markdown row per domain
-and a summary line.
+brings it; never commit it). A domain belongs to our fragment when its declared
+requirements are among STRIPS, typing, negative preconditions, equality and action costs
+(domains that declare none are tried too).
+
+Every instance gets one CSV row, so runs can be stopped, resumed and merged: a run only
+does what the CSV does not hold yet.
+  --read   the reader's verdict: `envdesign validate DOMAIN PROBLEM EMPTY_PLAN` (exit 2:
+           refused, its first line is the reason; no grounding, no search).
+  --fd     Fast Downward's astar(lmcut()) (--overall-time-limit: CPU seconds); its plan is
+           checked with our validator too (a plan it finds that we call invalid is our bug).
+  --ours   `envdesign plan`, limited to the same CPU seconds (RLIMIT_CPU set here, so the
+           load of a shared machine counts against neither planner); solved plans are
+           checked with our validator.
+  --ours-where-fd-solved   ours only where Fast Downward solved (when time is short).
+  --rerun-limit S   ours again with S CPU seconds on every instance Fast Downward solved
+           and ours did not solve within the first limit.
+The work goes breadth-first: instance 1 (by problem file name) of every domain, then
+instance 2, and so on, so that coverage is even when the run is stopped. Within a domain,
+a planner skips the rest after --skip-after consecutive instances it did not solve (ours
+still runs on every instance Fast Downward solved). Fast Downward does not run on instances
+our reader refuses (constructs outside the fragment: nothing to compare). Problems whose domain file is absent
+(a checkout that lacks blobs) are rows with verdict `missing`.
+
+Prints and writes (--markdown) one row per domain and a summary line, from the whole CSV.
 """
 import argparse
+import csv
 import glob
 import os
 import re
+import resource
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from ipc_benchmark import ROOT, validate  # noqa: E402  (one home for the validator call)
 
 FRAGMENT = {":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs"}
+COLUMNS = ["domain", "problem", "verdict", "reason", "our_status", "our_limit", "our_cost",
+           "our_cpu", "our_wall", "valid", "fd_status", "fd_cost", "fd_cpu", "fd_wall",
+           "fd_plan_valid"]
+MEMORY_MB = 2048
 
 
 def requirements(domain_file):
@@ -35,116 +61,242 @@ def requirements(domain_file):
 
 
 def instances(directory):
-    """(domain file, problem file) pairs, with the collection's naming conventions."""
+    """(domain file or None, problem file) pairs, with the collection's naming conventions.
+    None: the problem's own domain file (domain_NAME) is absent from the checkout."""
     pairs = []
     for problem in sorted(glob.glob(os.path.join(directory, "*.pddl"))):
         name = os.path.basename(problem)
         if "domain" in name:
             continue
-        for domain in (os.path.join(directory, "domain_" + name),
-                       os.path.join(directory, name.replace(".pddl", "-domain.pddl")),
-                       os.path.join(directory, "domain.pddl")):
-            if os.path.exists(domain):
-                pairs.append((domain, problem))
-                break
+        own = os.path.join(directory, "domain_" + name)
+        candidates = (own, os.path.join(directory, name.replace(".pddl", "-domain.pddl")),
+                      os.path.join(directory, "domain.pddl"))
+        found = next((d for d in candidates if os.path.exists(d)), None)
+        per_problem = glob.glob(os.path.join(directory, "domain_*.pddl"))
+        if found is None and per_problem:
+            pairs.append((None, problem))
+        elif found is not None:
+            pairs.append((found, problem))
     return pairs
 
 
-def run_ours(binary, domain, problem, time_limit, plan_file):
-    proc = subprocess.run([binary, "--log-level", "warn", "plan", domain, problem, "--json",
-                           "--time-limit", str(time_limit), "--plan-file", plan_file],
+def timed(command, cpu_limit, cwd=None):
+    """Runs command with a CPU-second limit (0: none); returns (process, cpu s, wall s)."""
+    def limit():
+        if cpu_limit:
+            resource.setrlimit(resource.RLIMIT_CPU, (int(cpu_limit), int(cpu_limit) + 1))
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    try:
+        proc = subprocess.run(command, capture_output=True, text=True, cwd=cwd,
+                              preexec_fn=limit, timeout=max(60, 20 * (cpu_limit or 60)))
+    except subprocess.TimeoutExpired as e:
+        proc = subprocess.CompletedProcess(command, -signal.SIGKILL, e.stdout or "", "")
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return proc, cpu, wall
+
+
+def read_verdict(binary, collection, domain, problem, work):
+    empty = os.path.join(work, "empty_plan")
+    open(empty, "w").close()
+    proc = subprocess.run([binary, "validate", domain, problem, empty],
                           capture_output=True, text=True)
     if proc.returncode == 2:
         lines = (proc.stderr or proc.stdout).strip().splitlines()
-        return {"refused": lines[0] if lines else "exit 2"}
+        reason = (lines[0] if lines else "exit 2").replace("|", "/")
+        return "refused", reason.replace(os.path.join(collection, ""), "")
+    return "accepted", ""
+
+
+def run_ours(binary, domain, problem, limit, work):
+    plan_file = os.path.join(work, "plan")
+    if os.path.exists(plan_file):
+        os.remove(plan_file)
+    # Our own --time-limit (wall clock) is only a guard here; the CPU limit decides.
+    proc, cpu, wall = timed([binary, "--log-level", "warn", "plan", domain, problem, "--json",
+                             "--time-limit", str(20 * limit), "--memory-limit", str(MEMORY_MB),
+                             "--plan-file", plan_file], limit)
+    row = {"our_limit": f"{limit:g}", "our_cpu": f"{cpu:.2f}", "our_wall": f"{wall:.2f}",
+           "our_cost": "", "valid": ""}
     cost = re.search(r'"cost":\s*([0-9.]+)', proc.stdout)
-    solved = proc.returncode == 0 and cost is not None
-    return {"refused": None, "solved": solved, "cost": float(cost.group(1)) if solved else None}
+    if proc.returncode == 2:
+        row["our_status"] = "refused"
+    elif proc.returncode == 0 and cost and os.path.exists(plan_file):
+        row["our_status"] = "solved"
+        row["our_cost"] = cost.group(1)
+        ok, _ = validate(binary, domain, problem, plan_file)
+        row["valid"] = "yes" if ok else "no"
+    elif proc.returncode == 3:
+        row["our_status"] = "unsolvable"
+    elif proc.returncode in (4, -signal.SIGXCPU, -signal.SIGKILL):
+        row["our_status"] = "limit"
+    else:
+        row["our_status"] = f"error {proc.returncode}"
+    return row
 
 
-def run_fd(fd, domain, problem, time_limit, workdir):
-    plan = os.path.join(workdir, "fd_plan")
+def run_fd(fd, binary, domain, problem, limit, work):
+    plan = os.path.join(work, "fd_plan")
     if os.path.exists(plan):
         os.remove(plan)
-    proc = subprocess.run([sys.executable, fd, "--overall-time-limit", f"{int(time_limit)}s",
-                           "--plan-file", plan, domain, problem, "--search", "astar(lmcut())"],
-                          capture_output=True, text=True, cwd=workdir)
-    if proc.returncode != 0 or not os.path.exists(plan):
-        return None
-    m = re.search(r"; cost = (\d+)", open(plan).read())
-    return float(m.group(1)) if m else None
+    proc, cpu, wall = timed([sys.executable, fd, "--overall-time-limit", f"{int(limit)}s",
+                             "--overall-memory-limit", f"{MEMORY_MB}M", "--plan-file", plan,
+                             domain, problem, "--search", "astar(lmcut())"], 0, cwd=work)
+    row = {"fd_cpu": f"{cpu:.2f}", "fd_wall": f"{wall:.2f}", "fd_cost": "", "fd_plan_valid": ""}
+    m = re.search(r"; cost = (\d+)", open(plan).read()) if os.path.exists(plan) else None
+    if proc.returncode == 0 and m:
+        row["fd_status"] = "solved"
+        row["fd_cost"] = m.group(1)
+        ok, _ = validate(binary, domain, problem, plan)
+        row["fd_plan_valid"] = "yes" if ok else "no"
+    else:
+        row["fd_status"] = f"failed {proc.returncode}"
+    return row
+
+
+def streak_broken(rows, key, skip_after):
+    """True when the last skip_after instances the planner ran (key: its status column) in
+    this domain, before this one, were all not solved."""
+    ran = [r[key] for r in rows if r.get(key)]
+    tail = ran[-skip_after:]
+    return skip_after > 0 and len(tail) == skip_after and all(s != "solved" for s in tail)
+
+
+def load(path):
+    if not path or not os.path.exists(path):
+        return {}
+    with open(path) as f:
+        return {(r["domain"], r["problem"]): r for r in csv.DictReader(f)}
+
+
+def save(path, table):
+    if not path:
+        return
+    with open(path + ".tmp", "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=COLUMNS)
+        writer.writeheader()
+        for key in sorted(table):
+            writer.writerow({c: table[key].get(c, "") for c in COLUMNS})
+    os.replace(path + ".tmp", path)
+
+
+def domains_of(collection, wanted, per_domain):
+    inside, outside = {}, []
+    for name in sorted(os.listdir(collection)):
+        directory = os.path.join(collection, name)
+        pairs = instances(directory) if os.path.isdir(directory) else []
+        if not pairs or (wanted and name not in wanted):
+            continue
+        reqs = requirements(next(d for d, _ in pairs if d))
+        if not reqs <= FRAGMENT:
+            outside.append(f"{name} ({' '.join(sorted(reqs - FRAGMENT))})")
+            continue
+        inside[name] = pairs[:per_domain] if per_domain else pairs
+    return inside, outside
+
+
+def run(args, inside, table):
+    rounds = max(len(p) for p in inside.values())
+    with tempfile.TemporaryDirectory() as work:
+        for i in range(rounds):
+            for name, pairs in inside.items():
+                if i >= len(pairs):
+                    continue
+                domain, problem = pairs[i]
+                key = (name, os.path.basename(problem))
+                row = table.setdefault(key, {"domain": name, "problem": key[1]})
+                before = [table.get((name, os.path.basename(p)), {}) for _, p in pairs[:i]]
+                if domain is None:
+                    row.update(verdict="missing", reason="domain file absent from the checkout")
+                    continue
+                if args.read and not row.get("verdict"):
+                    row["verdict"], row["reason"] = read_verdict(args.binary, args.collection,
+                                                                 domain, problem, work)
+                if args.fd and not row.get("fd_status") and row.get("verdict") != "refused" \
+                        and not streak_broken(before, "fd_status", args.skip_after):
+                    row.update(run_fd(args.fd, args.binary, domain, problem, args.time_limit,
+                                      work))
+                fd_solved = row.get("fd_status") == "solved"
+                if args.ours and not row.get("our_status") and row.get("verdict") != "refused" \
+                        and (fd_solved or (not args.ours_where_fd_solved and
+                                           not streak_broken(before, "our_status",
+                                                             args.skip_after))):
+                    row.update(run_ours(args.binary, domain, problem, args.time_limit, work))
+                if args.rerun_limit and fd_solved and row.get("our_status") == "limit" and \
+                        float(row.get("our_limit") or 0) < args.rerun_limit:
+                    row.update(run_ours(args.binary, domain, problem, args.rerun_limit, work))
+                save(args.csv, table)
+                print(",".join(row.get(c, "") for c in COLUMNS), flush=True)
+
+
+def summarize(inside, outside, table, time_limit):
+    header = ("| domain | instances | missing from the checkout | accepted | refused | "
+              "first refusal | FD solved | we solved | FD solved, we solved, cost equal | "
+              "cost differs | invalid plans |\n|---|---|---|---|---|---|---|---|---|---|---|")
+    rows, totals = [], {}
+    for name, pairs in inside.items():
+        rs = [table.get((name, os.path.basename(p)), {}) for _, p in pairs]
+        c = {"instances": len(rs),
+             "missing": sum(r.get("verdict") == "missing" for r in rs),
+             "accepted": sum(r.get("verdict") == "accepted" for r in rs),
+             "refused": sum(r.get("verdict") == "refused" for r in rs),
+             "fd": sum(r.get("fd_status") == "solved" for r in rs),
+             "solved": sum(r.get("our_status") == "solved" for r in rs),
+             "equal": sum(r.get("fd_status") == "solved" and r.get("our_status") == "solved"
+                          and float(r["our_cost"]) == float(r["fd_cost"]) for r in rs),
+             "differ": sum(r.get("fd_status") == "solved" and r.get("our_status") == "solved"
+                           and float(r["our_cost"]) != float(r["fd_cost"]) for r in rs),
+             "invalid": sum(r.get("valid") == "no" or r.get("fd_plan_valid") == "no"
+                            for r in rs)}
+        refusal = next((r["reason"] for r in rs if r.get("verdict") == "refused"), "")
+        rows.append(f"| {name} | {c['instances']} | {c['missing']} | {c['accepted']} | "
+                    f"{c['refused']} | {refusal} | {c['fd']} | {c['solved']} | {c['equal']} | "
+                    f"{c['differ']} | {c['invalid']} |")
+        for k, v in c.items():
+            totals[k] = totals.get(k, 0) + v
+    summary = (f"{len(rows)} domains of the fragment, {totals.get('instances', 0)} instances "
+               f"({totals.get('missing', 0)} missing from the checkout): "
+               f"{totals.get('accepted', 0)} accepted, {totals.get('refused', 0)} refused; "
+               f"Fast Downward solved {totals.get('fd', 0)} within {time_limit:g} s, we solved "
+               f"{totals.get('equal', 0) + totals.get('differ', 0)} of those, same cost on "
+               f"{totals.get('equal', 0)}, different on {totals.get('differ', 0)}; we solved "
+               f"{totals.get('solved', 0)} in all; {totals.get('invalid', 0)} invalid plans. "
+               f"Outside the fragment (by requirements): {len(outside)} domains.")
+    return header + "\n" + "\n".join(rows) + "\n\n" + summary + "\n\nOutside: " + \
+        ", ".join(outside) + "\n"
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("collection")
-    parser.add_argument("--time-limit", type=float, default=10)
+    parser.add_argument("--csv", help="one row per instance; read first, so runs resume")
+    parser.add_argument("--read", action="store_true", help="the reader's verdict")
+    parser.add_argument("--ours", action="store_true", help="our planner")
+    parser.add_argument("--fd", help="fast-downward.py of a build outside the repository")
+    parser.add_argument("--ours-where-fd-solved", action="store_true",
+                        help="ours only on instances Fast Downward solved")
+    parser.add_argument("--rerun-limit", type=float, default=0)
+    parser.add_argument("--time-limit", type=float, default=10, help="CPU seconds")
+    parser.add_argument("--skip-after", type=int, default=3)
     parser.add_argument("--per-domain", type=int, default=0, help="instances per domain (0: all)")
     parser.add_argument("--domains", default="", help="comma-separated names (default: all)")
-    parser.add_argument("--fd", help="fast-downward.py of a build outside the repository")
     parser.add_argument("--binary", default=os.path.join(ROOT, "build", "bin", "envdesign"))
     parser.add_argument("--markdown", help="also write the table here")
     args = parser.parse_args()
-    wanted = set(filter(None, args.domains.split(",")))
 
-    header = ("| domain | instances | accepted | refused | first refusal | solved | "
-              "FD solved | cost equal to FD | invalid plans |\n|---|---|---|---|---|---|---|---|---|")
-    rows, outside = [], []
-    totals = dict(instances=0, accepted=0, refused=0, solved=0, fd=0, equal=0, invalid=0)
-    with tempfile.TemporaryDirectory() as work:
-        plan_file = os.path.join(work, "plan")
-        for name in sorted(os.listdir(args.collection)):
-            directory = os.path.join(args.collection, name)
-            pairs = instances(directory) if os.path.isdir(directory) else []
-            if not pairs or (wanted and name not in wanted):
-                continue
-            reqs = requirements(pairs[0][0])
-            if not reqs <= FRAGMENT:
-                outside.append(f"{name} ({' '.join(sorted(reqs - FRAGMENT))})")
-                continue
-            if args.per_domain:
-                pairs = pairs[:args.per_domain]
-            c = dict(instances=0, accepted=0, refused=0, solved=0, fd=0, equal=0, invalid=0)
-            first_refusal = ""
-            for domain, problem in pairs:
-                c["instances"] += 1
-                if os.path.exists(plan_file):
-                    os.remove(plan_file)
-                ours = run_ours(args.binary, domain, problem, args.time_limit, plan_file)
-                if ours["refused"]:
-                    c["refused"] += 1
-                    first_refusal = first_refusal or ours["refused"].replace("|", "/")
-                    continue
-                c["accepted"] += 1
-                if ours["solved"]:
-                    c["solved"] += 1
-                    ok, _ = validate(args.binary, domain, problem, plan_file)
-                    c["invalid"] += not ok
-                if args.fd:
-                    reference = run_fd(args.fd, domain, problem, args.time_limit, work)
-                    if reference is not None:
-                        c["fd"] += 1
-                        c["equal"] += ours["solved"] and abs(ours["cost"] - reference) < 1e-9
-            fd = (lambda k: str(c[k])) if args.fd else (lambda k: "-")
-            rows.append(f"| {name} | {c['instances']} | {c['accepted']} | {c['refused']} | "
-                        f"{first_refusal} | {c['solved']} | {fd('fd')} | {fd('equal')} | "
-                        f"{c['invalid']} |")
-            print(rows[-1], flush=True)
-            for k in totals:
-                totals[k] += c[k]
-    summary = (f"{len(rows)} domains of the fragment, {totals['instances']} instances: "
-               f"{totals['accepted']} accepted, {totals['refused']} refused, "
-               f"{totals['solved']} solved in {args.time_limit:g} s, "
-               f"{totals['invalid']} invalid plans" +
-               (f"; Fast Downward solved {totals['fd']}, same cost on {totals['equal']}"
-                if args.fd else "") +
-               f". Outside the fragment (by requirements): {len(outside)} domains.")
-    print(summary)
+    inside, outside = domains_of(args.collection, set(filter(None, args.domains.split(","))),
+                                 args.per_domain)
+    table = load(args.csv)
+    if args.read or args.ours or args.fd or args.rerun_limit:
+        run(args, inside, table)
+    text = summarize(inside, outside, table, args.time_limit)
+    print(text)
     if args.markdown:
         with open(args.markdown, "w") as f:
-            f.write(header + "\n" + "\n".join(rows) + "\n\n" + summary + "\n\nOutside: " +
-                    ", ".join(outside) + "\n")
+            f.write(text)
 
 
 if __name__ == "__main__":
