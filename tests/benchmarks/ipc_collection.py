@@ -60,11 +60,17 @@ def requirements(domain_file):
     return set(m.group(1).split()) if m else set()
 
 
+def natural_order(path):
+    """probBLOCKS-4-0 before probBLOCKS-10-0: the numbers in a name compare as numbers, so the
+    instances run from small to large as the collection numbers them (the skip rule needs it)."""
+    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", path)]
+
+
 def instances(directory):
     """(domain file or None, problem file) pairs, with the collection's naming conventions.
     None: the problem's own domain file (domain_NAME) is absent from the checkout."""
     pairs = []
-    for problem in sorted(glob.glob(os.path.join(directory, "*.pddl"))):
+    for problem in sorted(glob.glob(os.path.join(directory, "*.pddl")), key=natural_order):
         name = os.path.basename(problem)
         if "domain" in name:
             continue
