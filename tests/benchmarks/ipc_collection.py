@@ -256,6 +256,17 @@ def summarize(inside, outside, table, time_limit):
                            and float(r["our_cost"]) != float(r["fd_cost"]) for r in rs),
              "invalid": sum(r.get("valid") == "no" or r.get("fd_plan_valid") == "no"
                             for r in rs)}
+        # Coverage: accepted instances FD did not run were skipped by the rule (the 3 FD ran
+        # before them in the domain all failed) or not reached yet.
+        for i, r in enumerate(rs):
+            if r.get("verdict") != "accepted":
+                continue
+            if r.get("fd_status"):
+                c["fd_ran"] = c.get("fd_ran", 0) + 1
+            elif streak_broken(rs[:i], "fd_status", 3):
+                c["skipped"] = c.get("skipped", 0) + 1
+            else:
+                c["unreached"] = c.get("unreached", 0) + 1
         refusal = next((r["reason"] for r in rs if r.get("verdict") == "refused"), "")
         rows.append(f"| {name} | {c['instances']} | {c['missing']} | {c['accepted']} | "
                     f"{c['refused']} | {refusal} | {c['fd']} | {c['solved']} | {c['equal']} | "
@@ -269,6 +280,9 @@ def summarize(inside, outside, table, time_limit):
                f"{totals.get('equal', 0) + totals.get('differ', 0)} of those, same cost on "
                f"{totals.get('equal', 0)}, different on {totals.get('differ', 0)}; we solved "
                f"{totals.get('solved', 0)} in all; {totals.get('invalid', 0)} invalid plans. "
+               f"Fast Downward ran on {totals.get('fd_ran', 0)} of the accepted instances; "
+               f"{totals.get('skipped', 0)} skipped after 3 consecutive failures in their "
+               f"domain, {totals.get('unreached', 0)} not reached. "
                f"Outside the fragment (by requirements): {len(outside)} domains.")
     return header + "\n" + "\n".join(rows) + "\n\n" + summary + "\n\nOutside: " + \
         ", ".join(outside) + "\n"
