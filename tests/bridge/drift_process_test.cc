@@ -20,35 +20,6 @@ const std::vector<std::string> BRIDGE_FLAGS = {"--estimator", "window:100", "--t
                                                "--rearm",     "0.1",        "--min-samples", "50",
                                                "--holdoff",   "20"};
 
-// The self-contained run's design for the drift spec with D = `d`.
-std::vector<std::string> self_contained_design(const std::string &dir,
-                                               const std::map<std::string, double> &d) {
-    std::ifstream in(DRIFT_SPEC);
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string spec =
-        std::regex_replace(text.str(), std::regex("\"\\.\\./\\.\\./\\.\\./"), "\"" + SOURCE + "/");
-    std::stringstream lines(spec);
-    spec.clear();
-    for (std::string line; std::getline(lines, line);) {
-        for (const auto &[task, p] : d)
-            if (line.find("name: \"" + task + "\"") != std::string::npos)
-                line = std::regex_replace(line, std::regex("probability: [0-9.]+"),
-                                          "probability: " + std::to_string(p));
-        spec += line + "\n";
-    }
-    std::string path = dir + "/self-contained.textproto";
-    std::ofstream(path) << spec;
-    std::string out;
-    FILE *pipe = popen((BIN + "/envdesign design " + path + " --json 2>/dev/null").c_str(), "r");
-    char buffer[4096];
-    while (pipe && fgets(buffer, sizeof buffer, pipe))
-        out += buffer;
-    if (pipe)
-        pclose(pipe);
-    return nlohmann::json::parse(out).at("design").get<std::vector<std::string>>();
-}
-
 std::map<std::string, double> distribution(const envdesign::design_result_t &r) {
     std::map<std::string, double> d;
     for (const auto &t : r.tasks)
@@ -107,7 +78,8 @@ void run_drift(const std::string &dir, Listener &lcm, Process &bridge, int domai
     // The final design is the self-contained run's for the final D.
     auto final_d = distribution(results.back().message);
     EXPECT_LT(final_d.at("serve-g1"), 0.7);
-    EXPECT_EQ(self_contained_design(dir, final_d), designs.back());
+    EXPECT_EQ(self_contained(dir, DRIFT_SPEC, final_d).at("design").get<std::vector<std::string>>(),
+              designs.back());
     auto estimate = *lcm.last_estimate("restaurant");
     EXPECT_EQ(estimate.design, designs.back());
     EXPECT_NE(estimate.last_change.find("barrier-00-01"), std::string::npos);

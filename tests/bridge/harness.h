@@ -6,11 +6,16 @@
 #include "listener.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -30,6 +35,37 @@ inline std::vector<std::string> dds_env() {
 // (two tests once shared 7766/66 and 7779/79, and failed now and then under load).
 inline std::string lcm_url(int port) {
     return "udpm://239.255.76.67:" + std::to_string(port) + "?ttl=0";
+}
+
+// The self-contained run's JSON result (`envdesign design --json`) for the spec at
+// `spec_path` (a file under tests/, its PDDL paths relative to the source tree) with the
+// task probabilities set to `d`: the independent answer the bridge's design is checked by.
+inline nlohmann::json self_contained(const std::string &dir, const std::string &spec_path,
+                                     const std::map<std::string, double> &d) {
+    std::ifstream in(spec_path);
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string spec =
+        std::regex_replace(text.str(), std::regex("\"\\.\\./\\.\\./\\.\\./"), "\"" + SOURCE + "/");
+    std::stringstream lines(spec);
+    spec.clear();
+    for (std::string line; std::getline(lines, line);) {
+        for (const auto &[task, p] : d)
+            if (line.find("name: \"" + task + "\"") != std::string::npos)
+                line = std::regex_replace(line, std::regex("probability: [0-9.]+"),
+                                          "probability: " + std::to_string(p));
+        spec += line + "\n";
+    }
+    std::string path = dir + "/self-contained.textproto";
+    std::ofstream(path) << spec;
+    std::string out;
+    FILE *pipe = popen((BIN + "/envdesign design " + path + " --json 2>/dev/null").c_str(), "r");
+    char buffer[4096];
+    while (pipe && fgets(buffer, sizeof buffer, pipe))
+        out += buffer;
+    if (pipe)
+        pclose(pipe);
+    return nlohmann::json::parse(out);
 }
 
 // A scratch directory for one test's logs and replay files.
