@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 
 namespace envdesign::ground {
 namespace {
@@ -80,8 +81,12 @@ private:
         return it->second;
     }
 
-    Cost cost_of(const pddl::Action &action, const std::vector<pddl::CostExpression> &costs,
-                 const ActionInstance &instance) const {
+    // The instance's cost; none when the problem gives no value for a term of it. An
+    // undefined value makes the instance inapplicable (PDDL 2.1's semantics, and Fast
+    // Downward's), so it gets no operator rather than an error.
+    std::optional<Cost> cost_of(const pddl::Action &action,
+                                const std::vector<pddl::CostExpression> &costs,
+                                const ActionInstance &instance) const {
         long long total = 0;
         for (const auto &c : costs) {
             total += c.constant;
@@ -94,9 +99,7 @@ private:
                                   : arg);
             auto value = problem_.function_values.find(term);
             if (value == problem_.function_values.end())
-                throw pddl::ParseError({problem_.file, 0, 0},
-                                       "the problem gives no value for " + term.to_string() +
-                                           ", the cost of action '" + action.name + "'");
+                return std::nullopt;
             total += value->second;
         }
         if (total > std::numeric_limits<Cost>::max() / 2) // f = g + h must not overflow either
@@ -124,8 +127,12 @@ private:
             if (f >= 0)
                 (l.negated ? op.del : op.add).push_back(f);
         }
-        op.cost = problem_.minimize_total_cost ? cost_of(action, action.costs, instance) : 1;
-        op.secondary_cost = cost_of(action, action.secondary_costs, instance);
+        auto cost = cost_of(action, action.costs, instance);
+        auto secondary_cost = cost_of(action, action.secondary_costs, instance);
+        if (!cost || !secondary_cost)
+            return;
+        op.cost = problem_.minimize_total_cost ? *cost : 1;
+        op.secondary_cost = *secondary_cost;
         sort_unique(op.pre);
         sort_unique(op.add);
         sort_unique(op.del);

@@ -11,30 +11,33 @@ namespace {
 
 const std::set<std::string> SUPPORTED_REQUIREMENTS = {
     ":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs"};
-const std::set<std::string> UNSUPPORTED_REQUIREMENTS = {":adl",
-                                                        ":disjunctive-preconditions",
-                                                        ":existential-preconditions",
-                                                        ":universal-preconditions",
-                                                        ":quantified-preconditions",
-                                                        ":conditional-effects",
-                                                        ":fluents",
-                                                        ":numeric-fluents",
-                                                        ":object-fluents",
-                                                        ":durative-actions",
-                                                        ":duration-inequalities",
-                                                        ":continuous-effects",
-                                                        ":derived-predicates",
-                                                        ":timed-initial-literals",
-                                                        ":preferences",
-                                                        ":constraints"};
+// Requirements beyond the fragment are accepted as declarations, as Fast Downward does: a
+// domain may declare more than it uses (IPC 2018's data-network-opt18-strips declares :adl),
+// and what lies outside the fragment is refused where it is used, by name.
+const std::set<std::string> BEYOND_FRAGMENT_REQUIREMENTS = {":adl",
+                                                            ":disjunctive-preconditions",
+                                                            ":existential-preconditions",
+                                                            ":universal-preconditions",
+                                                            ":quantified-preconditions",
+                                                            ":conditional-effects",
+                                                            ":fluents",
+                                                            ":numeric-fluents",
+                                                            ":object-fluents",
+                                                            ":durative-actions",
+                                                            ":duration-inequalities",
+                                                            ":continuous-effects",
+                                                            ":derived-predicates",
+                                                            ":timed-initial-literals",
+                                                            ":preferences",
+                                                            ":constraints"};
 
 void parse_requirements(const SExpr &section, Domain &domain) {
     for (std::size_t i = 1; i < section.items.size(); ++i) {
         const SExpr &r = section.items[i];
         if (r.is_list)
             throw ParseError(r.location, "expected a requirement like ':strips'");
-        if (UNSUPPORTED_REQUIREMENTS.count(r.symbol))
-            throw ParseError(r.location, "requirement '" + r.symbol + "' is not supported");
+        if (BEYOND_FRAGMENT_REQUIREMENTS.count(r.symbol))
+            continue;
         if (!SUPPORTED_REQUIREMENTS.count(r.symbol))
             throw ParseError(r.location, "unknown requirement '" + r.symbol + "'");
         domain.requirements.insert(r.symbol);
@@ -193,35 +196,51 @@ Domain parse_domain(const SExpr &define, const std::string &file) {
     Domain domain;
     domain.file = file;
     domain.name = define.items[1].items[1].symbol;
-    std::set<std::string> sections_seen;
+    // Declarations may come in any order (Fast Downward reads them so before the first action,
+    // with a warning; after an action is harmless too): each is read in the order its
+    // dependencies need.
+    static const std::vector<std::string> DECLARATIONS = {":requirements", ":types", ":constants",
+                                                          ":predicates", ":functions"};
+    std::map<std::string, const SExpr *> declarations;
+    std::vector<const SExpr *> actions;
     for (std::size_t i = 2; i < define.items.size(); ++i) {
         const SExpr &section = define.items[i];
         if (!section.is_list || section.items.empty() || section.items[0].is_list)
             throw ParseError(section.location,
                              "expected a domain section like '(:predicates ...)'");
         const std::string &head = section.items[0].symbol;
-        if (head != ":action" && !sections_seen.insert(head).second)
-            throw ParseError(section.location, "duplicate section '" + head + "'");
-        if (head == ":requirements") {
-            parse_requirements(section, domain);
-        } else if (head == ":types") {
-            parse_types(section, domain);
-        } else if (head == ":constants") {
-            domain.constants = parse_typed_list(section.items, 1, "constant", &domain.type_parent);
-        } else if (head == ":predicates") {
-            domain.predicates = parse_signatures(section, domain, "predicate");
-        } else if (head == ":functions") {
-            domain.functions = parse_signatures(section, domain, "function");
-        } else if (head == ":action") {
-            Action action = parse_action(section, domain);
-            if (domain.find_action(action.name))
-                throw ParseError(section.location, "duplicate action '" + action.name + "'");
-            domain.actions.push_back(std::move(action));
+        if (head == ":action") {
+            actions.push_back(&section);
         } else if (head == ":derived" || head == ":durative-action" || head == ":constraints") {
             reject_unsupported(section, "'" + head + "'");
-        } else {
+        } else if (std::find(DECLARATIONS.begin(), DECLARATIONS.end(), head) ==
+                   DECLARATIONS.end()) {
             throw ParseError(section.location, "unknown domain section '" + head + "'");
+        } else if (!declarations.emplace(head, &section).second) {
+            throw ParseError(section.location, "duplicate section '" + head + "'");
         }
+    }
+    for (const auto &head : DECLARATIONS) {
+        auto found = declarations.find(head);
+        if (found == declarations.end())
+            continue;
+        const SExpr &section = *found->second;
+        if (head == ":requirements")
+            parse_requirements(section, domain);
+        else if (head == ":types")
+            parse_types(section, domain);
+        else if (head == ":constants")
+            domain.constants = parse_typed_list(section.items, 1, "constant", &domain.type_parent);
+        else if (head == ":predicates")
+            domain.predicates = parse_signatures(section, domain, "predicate");
+        else
+            domain.functions = parse_signatures(section, domain, "function");
+    }
+    for (const SExpr *section : actions) {
+        Action action = parse_action(*section, domain);
+        if (domain.find_action(action.name))
+            throw ParseError(section->location, "duplicate action '" + action.name + "'");
+        domain.actions.push_back(std::move(action));
     }
     return domain;
 }

@@ -19,6 +19,7 @@ const std::map<std::string, std::string> UNSUPPORTED_CONNECTIVES = {
     {">", "'>' (numeric comparison)"},
     {"<=", "'<=' (numeric comparison)"},
     {">=", "'>=' (numeric comparison)"},
+    {"preference", "'preference' (preferences)"},
 };
 
 std::vector<std::string> parse_type_spec(const SExpr &e,
@@ -139,12 +140,21 @@ Atom NameScope::parse_atom(const SExpr &e, bool functions) const {
 }
 
 Literal NameScope::parse_literal(const SExpr &e) const {
-    if (e.has_head("not")) {
-        if (e.items.size() != 2)
-            throw ParseError(e.location, "'not' takes exactly one argument " + context_);
-        return {parse_atom(e.items[1]), true};
+    if (!e.has_head("not"))
+        return {parse_atom(e), false};
+    if (e.items.size() != 2)
+        throw ParseError(e.location, "'not' takes exactly one argument " + context_);
+    const SExpr &inner = e.items[1];
+    // (not (not L)) is L, as in Fast Downward's translator, which puts conditions in
+    // negation normal form; no domain of the IPC collection needs it, hand-written ones do.
+    if (inner.has_head("not")) {
+        Literal l = parse_literal(inner);
+        l.negated = !l.negated;
+        return l;
     }
-    return {parse_atom(e), false};
+    if (inner.has_head("and"))
+        reject_unsupported(inner, "'not' over 'and' (a disjunction)");
+    return {parse_atom(inner), true};
 }
 
 std::vector<Literal> NameScope::parse_conjunction(const SExpr &e, const std::string &what) const {

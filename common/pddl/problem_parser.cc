@@ -2,6 +2,7 @@
 #include "pddl/name_scope.h"
 #include "pddl/parser.h"
 
+#include <map>
 #include <set>
 
 namespace envdesign::pddl {
@@ -20,23 +21,33 @@ int parse_function_value(const SExpr &e) {
 }
 
 void parse_init(const SExpr &section, const NameScope &scope, Problem &problem) {
-    std::set<Atom> seen;
+    // Atoms listed as false: the closed world makes them redundant, but they must not
+    // contradict an atom listed as true (Fast Downward reads both the same way).
+    std::map<Atom, bool> listed;
     for (std::size_t i = 1; i < section.items.size(); ++i) {
         const SExpr &e = section.items[i];
         if (e.has_head("=")) {
             if (e.items.size() != 3 || !e.items[1].is_list)
                 throw ParseError(e.location, "expected '(= (function arg ...) VALUE)' in :init");
             Atom f = scope.parse_atom(e.items[1], true);
-            if (problem.function_values.count(f))
-                throw ParseError(e.location, "duplicate value for " + f.to_string());
-            problem.function_values[f] = parse_function_value(e.items[2]);
+            int value = parse_function_value(e.items[2]);
+            auto [it, inserted] = problem.function_values.emplace(f, value);
+            if (!inserted && it->second != value) // the same value twice is harmless
+                throw ParseError(e.location, "conflicting values " + std::to_string(it->second) +
+                                                 " and " + std::to_string(value) + " for " +
+                                                 f.to_string());
             continue;
         }
-        if (e.has_head("not"))
-            throw ParseError(e.location, "negative literals are not allowed in :init "
-                                         "(closed world: leave the atom out)");
-        Atom atom = scope.parse_atom(e);
-        if (seen.insert(atom).second) // repeated atoms are harmless; keep the first
+        if (e.has_head("at") && e.items.size() == 3 && e.items[2].is_list)
+            reject_unsupported(e, "a timed initial literal '(at TIME FACT)'");
+        bool negated = e.has_head("not");
+        if (negated && e.items.size() != 2)
+            throw ParseError(e.location, "'not' takes exactly one argument in :init");
+        Atom atom = scope.parse_atom(negated ? e.items[1] : e);
+        auto [it, inserted] = listed.emplace(atom, !negated);
+        if (!inserted && it->second == negated)
+            throw ParseError(e.location, atom.to_string() + " is listed as both true and false");
+        if (inserted && !negated) // repeated atoms are harmless; keep the first
             problem.init.push_back(atom);
     }
 }

@@ -14,6 +14,9 @@ public:
         skip_space();
         if (at_end())
             throw ParseError(here(), "empty input: expected '(define ...)'");
+        if (text_.compare(pos_, 3, "\xEF\xBB\xBF") == 0)
+            throw ParseError(here(), "the file starts with a UTF-8 byte-order mark; PDDL is "
+                                     "ASCII (save it without the mark)");
         if (text_[pos_] != '(')
             throw ParseError(here(), "expected '(' at the start of the file");
         SExpr top = read_list();

@@ -67,13 +67,17 @@ public:
                 return "precondition " + l.to_string() + " of " + step.to_string() +
                        " does not hold";
         }
+        long long cost = 0;
+        if (std::string missing = step_cost(*action, binding, cost); !missing.empty())
+            return "the problem gives no value for " + missing + ", a cost of " + step.to_string() +
+                   ", so it is not applicable";
         for (const auto &l : action->effect)
             if (l.negated)
                 state_.erase(ground_atom(l.atom, binding));
         for (const auto &l : action->effect)
             if (!l.negated)
                 state_.insert(ground_atom(l.atom, binding));
-        cost_ += step_cost(*action, binding);
+        cost_ += problem_.minimize_total_cost ? cost : 1;
         return "";
     }
 
@@ -105,21 +109,23 @@ private:
         return false;
     }
 
-    long long step_cost(const pddl::Action &action, const Binding &binding) const {
-        if (!problem_.minimize_total_cost)
-            return 1;
-        long long total = 0;
+    // The step's cost into `cost`; returns the first term the problem gives no value for
+    // ("" if none), which makes the step inapplicable, as the grounder has it.
+    std::string step_cost(const pddl::Action &action, const Binding &binding,
+                          long long &cost) const {
         for (const auto &c : action.costs) {
-            total += c.constant;
-            if (c.function) {
-                pddl::Atom term{c.function->predicate, {}, {}};
-                for (const auto &arg : c.function->args)
-                    term.args.push_back(resolve(arg, binding));
-                auto value = problem_.function_values.find(term);
-                total += value == problem_.function_values.end() ? 0 : value->second;
-            }
+            cost += c.constant;
+            if (!c.function)
+                continue;
+            pddl::Atom term{c.function->predicate, {}, {}};
+            for (const auto &arg : c.function->args)
+                term.args.push_back(resolve(arg, binding));
+            auto value = problem_.function_values.find(term);
+            if (value == problem_.function_values.end())
+                return term.to_string();
+            cost += value->second;
         }
-        return total;
+        return "";
     }
 
 public:

@@ -52,6 +52,23 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"unsupported-forall.pddl", "ok-problem.pddl",
                  "unsupported-forall.pddl:6:19: error: 'forall' (universal quantification) "
                  "is not supported"},
+        // a requirement beyond the fragment is accepted; the construct is refused where used
+        BadInput{"beyond-requirement-used.pddl", "ok-problem.pddl",
+                 "beyond-requirement-used.pddl:7:13: error: 'when' (conditional effects) is not "
+                 "supported"},
+        BadInput{"not-over-and.pddl", "ok-problem.pddl",
+                 "not-over-and.pddl:6:24: error: 'not' over 'and' (a disjunction) is not "
+                 "supported"},
+        BadInput{"ok-domain.pddl", "timed-literal-problem.pddl",
+                 "timed-literal-problem.pddl:4:17: error: a timed initial literal"},
+        BadInput{"ok-domain.pddl", "preference-problem.pddl",
+                 "preference-problem.pddl:5:28: error: 'preference' (preferences) is not "
+                 "supported"},
+        BadInput{"ok-domain.pddl", "init-true-and-false-problem.pddl",
+                 "init-true-and-false-problem.pddl:5:10: error: (p o1) is listed as both true "
+                 "and false"},
+        BadInput{"byte-order-mark.pddl", "ok-problem.pddl",
+                 "byte-order-mark.pddl:1:1: error: the file starts with a UTF-8 byte-order mark"},
         BadInput{"missing.pddl", "ok-problem.pddl", "missing.pddl:0:0: error: cannot open file"}));
 
 TEST(BadFlags, UnknownHeuristicIsAUsageError) {

@@ -55,19 +55,19 @@ TEST(Parser, IsCaseInsensitiveAndSkipsComments) {
     EXPECT_EQ(e.to_string(), "(define (domain mixed))");
 }
 
-TEST(Parser, RejectsNegativeInitWithItsLocation) {
+TEST(Parser, RejectsAnInitAtomListedTrueAndFalseWithItsLocation) {
     Domain d = parse_domain(read_sexpr("(define (domain d) (:predicates (p ?x)))", "d.pddl"),
                             "d.pddl");
     try {
         parse_problem(read_sexpr("(define (problem q) (:domain d) (:objects a)\n"
-                                 "  (:init (not (p a))) (:goal (p a)))",
+                                 "  (:init (p a) (not (p a))) (:goal (p a)))",
                                  "q.pddl"),
                       "q.pddl", d);
         FAIL() << "expected a ParseError";
     } catch (const ParseError &e) {
         EXPECT_EQ(e.location().line, 2);
-        EXPECT_EQ(e.location().column, 10);
-        EXPECT_NE(std::string(e.what()).find("negative literals are not allowed"),
+        EXPECT_EQ(e.location().column, 16);
+        EXPECT_NE(std::string(e.what()).find("(p a) is listed as both true and false"),
                   std::string::npos);
     }
 }

@@ -48,5 +48,20 @@ TEST_F(PlanValidatorTest, RejectsUnknownActionsAndWrongTypes) {
     EXPECT_FALSE(validate_plan(domain, problem, {"(move r1 kitchen kitchen)"}).valid);
 }
 
+// A step whose cost has no value in the problem is not applicable, as the grounder has it
+// (tests/data/liberties/undefined-cost: the road a-c has no length).
+TEST(PlanValidator, RejectsAStepWhoseCostHasNoValue) {
+    const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/liberties/";
+    pddl::Domain domain = pddl::parse_domain_file(dir + "undefined-cost-domain.pddl");
+    pddl::Problem problem = pddl::parse_problem_file(dir + "undefined-cost-problem.pddl", domain);
+    Validation direct = validate_plan(domain, problem, {"(drive a c)"});
+    EXPECT_FALSE(direct.valid);
+    EXPECT_EQ(direct.failed_step, 0);
+    EXPECT_NE(direct.error.find("no value for (length a c)"), std::string::npos) << direct.error;
+    Validation long_way = validate_plan(domain, problem, {"(drive a b)", "(drive b c)"});
+    EXPECT_TRUE(long_way.valid) << long_way.error;
+    EXPECT_EQ(long_way.cost, 7);
+}
+
 }  // namespace
 }  // namespace envdesign::validate

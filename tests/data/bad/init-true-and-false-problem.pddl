@@ -1,0 +1,6 @@
+(define (problem pr)
+  (:domain d)
+  (:objects o1 o2)
+  (:init (p o1) (p o2)
+         (not (p o1)))
+  (:goal (not (p o1))))

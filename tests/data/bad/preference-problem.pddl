@@ -1,0 +1,5 @@
+(define (problem pr)
+  (:domain d)
+  (:objects o1 o2)
+  (:init (p o1))
+  (:goal (and (not (p o1)) (preference keep (p o2)))))

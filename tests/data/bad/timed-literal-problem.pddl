@@ -1,0 +1,5 @@
+(define (problem pr)
+  (:domain d)
+  (:objects o1 o2)
+  (:init (p o1) (at 10 (p o2)))
+  (:goal (not (p o1))))

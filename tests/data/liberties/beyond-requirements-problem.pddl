@@ -1,0 +1,6 @@
+(define (problem beyond-requirements-1)
+  (:domain beyond-requirements)
+  (:objects a b c)
+  (:init (at a) (link a b) (link b c) (= (total-cost) 0))
+  (:goal (at c))
+  (:metric minimize (total-cost)))

@@ -1,0 +1,5 @@
+(define (problem double-negation-1)
+  (:domain double-negation)
+  (:objects j1 j2)
+  (:init (ready j1) (ready j2) (done j2))
+  (:goal (and (done j1) (not (not (done j2))))))

@@ -1,0 +1,8 @@
+(define (problem init-listed-false-1)
+  (:domain init-listed-false)
+  (:objects l1 l2)
+  (:init (on l1) (not (on l2)) (not (off l1)) (not (on l2))
+         (= (switch-cost l1) 4) (= (switch-cost l2) 3) (= (switch-cost l2) 3)
+         (= (total-cost) 0))
+  (:goal (and (on l1) (on l2)))
+  (:metric minimize (total-cost)))

@@ -1,0 +1,5 @@
+(define (problem sections-any-order-1)
+  (:domain sections-any-order)
+  (:objects r - robot a b c - place)
+  (:init (at r a) (link a b) (link b c))
+  (:goal (at r c)))

@@ -1,0 +1,7 @@
+(define (problem undefined-cost-1)
+  (:domain undefined-cost)
+  (:objects a b c - place)
+  (:init (at a) (road a b) (road b c) (road a c)
+         (= (length a b) 3) (= (length b c) 4) (= (total-cost) 0))
+  (:goal (at c))
+  (:metric minimize (total-cost)))
