@@ -127,11 +127,12 @@ private:
             if (f >= 0)
                 (l.negated ? op.del : op.add).push_back(f);
         }
-        auto cost = cost_of(action, action.costs, instance);
+        // Without the metric every action costs 1 and its cost terms are not read.
+        auto cost = problem_.minimize_total_cost ? cost_of(action, action.costs, instance) : 1;
         auto secondary_cost = cost_of(action, action.secondary_costs, instance);
         if (!cost || !secondary_cost)
             return;
-        op.cost = problem_.minimize_total_cost ? *cost : 1;
+        op.cost = *cost;
         op.secondary_cost = *secondary_cost;
         sort_unique(op.pre);
         sort_unique(op.add);

@@ -67,17 +67,20 @@ public:
                 return "precondition " + l.to_string() + " of " + step.to_string() +
                        " does not hold";
         }
-        long long cost = 0;
-        if (std::string missing = step_cost(*action, binding, cost); !missing.empty())
-            return "the problem gives no value for " + missing + ", a cost of " + step.to_string() +
-                   ", so it is not applicable";
+        long long cost = 1; // without the metric every action costs 1
+        if (problem_.minimize_total_cost) {
+            cost = 0;
+            if (std::string missing = step_cost(*action, binding, cost); !missing.empty())
+                return "the problem gives no value for " + missing + ", a cost of " +
+                       step.to_string() + ", so it is not applicable";
+        }
         for (const auto &l : action->effect)
             if (l.negated)
                 state_.erase(ground_atom(l.atom, binding));
         for (const auto &l : action->effect)
             if (!l.negated)
                 state_.insert(ground_atom(l.atom, binding));
-        cost_ += problem_.minimize_total_cost ? cost : 1;
+        cost_ += cost;
         return "";
     }
 

@@ -28,8 +28,8 @@ The work goes breadth-first: instance 1 (by problem file name) of every domain, 
 instance 2, and so on, so that coverage is even when the run is stopped. Within a domain,
 a planner skips the rest after --skip-after consecutive instances it did not solve (ours
 still runs on every instance Fast Downward solved). Fast Downward does not run on instances
-our reader refuses (constructs outside the fragment: nothing to compare). Problems whose domain file is absent
-(a checkout that lacks blobs) are rows with verdict `missing`.
+our reader refuses (constructs outside the fragment: nothing to compare). Problems whose
+domain file is absent (a checkout that lacks blobs) are rows with verdict `missing`.
 
 Prints and writes (--markdown) one row per domain and a summary line per group of
 domains, from the whole CSV.
