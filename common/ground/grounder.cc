@@ -110,7 +110,14 @@ private:
 
     void add_operator(const ActionInstance &instance) {
         const pddl::Action &action = domain_.actions[instance.schema];
+        // Without the metric every action costs 1 and its cost terms are not read.
+        auto cost = problem_.minimize_total_cost ? cost_of(action, action.costs, instance) : 1;
+        auto secondary_cost = cost_of(action, action.secondary_costs, instance);
+        if (!cost || !secondary_cost)
+            return;
         GroundOperator op;
+        op.cost = *cost;
+        op.secondary_cost = *secondary_cost;
         op.name = "(" + action.name;
         for (int o : instance.arguments)
             op.name += " " + r_.objects[o];
@@ -127,13 +134,6 @@ private:
             if (f >= 0)
                 (l.negated ? op.del : op.add).push_back(f);
         }
-        // Without the metric every action costs 1 and its cost terms are not read.
-        auto cost = problem_.minimize_total_cost ? cost_of(action, action.costs, instance) : 1;
-        auto secondary_cost = cost_of(action, action.secondary_costs, instance);
-        if (!cost || !secondary_cost)
-            return;
-        op.cost = *cost;
-        op.secondary_cost = *secondary_cost;
         sort_unique(op.pre);
         sort_unique(op.add);
         sort_unique(op.del);

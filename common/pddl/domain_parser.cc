@@ -11,33 +11,37 @@ namespace {
 
 const std::set<std::string> SUPPORTED_REQUIREMENTS = {
     ":strips", ":typing", ":negative-preconditions", ":equality", ":action-costs"};
-// Requirements beyond the fragment are accepted as declarations, as Fast Downward does: a
-// domain may declare more than it uses (IPC 2018's data-network-opt18-strips declares :adl),
-// and what lies outside the fragment is refused where it is used, by name.
-const std::set<std::string> BEYOND_FRAGMENT_REQUIREMENTS = {":adl",
-                                                            ":disjunctive-preconditions",
-                                                            ":existential-preconditions",
-                                                            ":universal-preconditions",
-                                                            ":quantified-preconditions",
-                                                            ":conditional-effects",
-                                                            ":fluents",
-                                                            ":numeric-fluents",
-                                                            ":object-fluents",
-                                                            ":durative-actions",
-                                                            ":duration-inequalities",
-                                                            ":continuous-effects",
-                                                            ":derived-predicates",
-                                                            ":timed-initial-literals",
-                                                            ":preferences",
-                                                            ":constraints"};
+// Requirements beyond the fragment that Fast Downward's translator knows are accepted as
+// declarations: a domain may declare more than it uses (IPC 2018's data-network-opt18-strips
+// declares :adl), and what lies outside the fragment is refused where it is used, by name.
+const std::set<std::string> DECLARED_ONLY_REQUIREMENTS = {":adl",
+                                                          ":negation",
+                                                          ":disjunctive-preconditions",
+                                                          ":existential-preconditions",
+                                                          ":universal-preconditions",
+                                                          ":quantified-preconditions",
+                                                          ":conditional-effects",
+                                                          ":derived-predicates"};
+// The rest of PDDL's labels, which Fast Downward refuses too.
+const std::set<std::string> UNSUPPORTED_REQUIREMENTS = {":fluents",
+                                                        ":numeric-fluents",
+                                                        ":object-fluents",
+                                                        ":durative-actions",
+                                                        ":duration-inequalities",
+                                                        ":continuous-effects",
+                                                        ":timed-initial-literals",
+                                                        ":preferences",
+                                                        ":constraints"};
 
 void parse_requirements(const SExpr &section, Domain &domain) {
     for (std::size_t i = 1; i < section.items.size(); ++i) {
         const SExpr &r = section.items[i];
         if (r.is_list)
             throw ParseError(r.location, "expected a requirement like ':strips'");
-        if (BEYOND_FRAGMENT_REQUIREMENTS.count(r.symbol))
+        if (DECLARED_ONLY_REQUIREMENTS.count(r.symbol))
             continue;
+        if (UNSUPPORTED_REQUIREMENTS.count(r.symbol))
+            throw ParseError(r.location, "requirement '" + r.symbol + "' is not supported");
         if (!SUPPORTED_REQUIREMENTS.count(r.symbol))
             throw ParseError(r.location, "unknown requirement '" + r.symbol + "'");
         domain.requirements.insert(r.symbol);

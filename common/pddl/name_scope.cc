@@ -144,32 +144,43 @@ Literal NameScope::parse_literal(const SExpr &e) const {
         return {parse_atom(e), false};
     if (e.items.size() != 2)
         throw ParseError(e.location, "'not' takes exactly one argument " + context_);
-    const SExpr &inner = e.items[1];
-    // (not (not L)) is L, as in Fast Downward's translator, which puts conditions in
-    // negation normal form; no domain of the IPC collection needs it, hand-written ones do.
-    if (inner.has_head("not")) {
-        Literal l = parse_literal(inner);
-        l.negated = !l.negated;
-        return l;
-    }
-    if (inner.has_head("and"))
-        reject_unsupported(inner, "'not' over 'and' (a disjunction)");
-    return {parse_atom(inner), true};
+    if (e.items[1].has_head("not")) // Fast Downward refuses it in an effect too
+        throw ParseError(e.items[1].location, "'not' inside 'not' is allowed in a condition, "
+                                              "not here " +
+                                                  context_);
+    return {parse_atom(e.items[1]), true};
 }
 
 std::vector<Literal> NameScope::parse_conjunction(const SExpr &e, const std::string &what) const {
-    if (!e.is_list)
-        throw ParseError(e.location, "expected a " + what + " in parentheses " + context_);
-    if (e.items.empty())
-        return {};
-    if (!e.has_head("and"))
-        return {parse_literal(e)};
     std::vector<Literal> result;
-    for (std::size_t i = 1; i < e.items.size(); ++i) {
-        auto part = parse_conjunction(e.items[i], what);
-        result.insert(result.end(), part.begin(), part.end());
-    }
+    add_condition(e, what, result);
     return result;
+}
+
+void NameScope::add_condition(const SExpr &e, const std::string &what,
+                              std::vector<Literal> &out) const {
+    // Negations are counted down to an atom or a conjunction, as Fast Downward's translator
+    // puts conditions in negation normal form: (not (not L)) is L. No domain of the IPC
+    // collection needs it; hand-written ones do.
+    bool negated = false;
+    const SExpr *c = &e;
+    for (; c->has_head("not"); c = &c->items[1]) {
+        if (c->items.size() != 2)
+            throw ParseError(c->location, "'not' takes exactly one argument " + context_);
+        negated = !negated;
+    }
+    if (!c->is_list)
+        throw ParseError(c->location, "expected a " + what + " in parentheses " + context_);
+    if (c->items.empty()) // the empty condition: true
+        return;
+    if (!c->has_head("and")) {
+        out.push_back({parse_atom(*c), negated});
+        return;
+    }
+    if (negated)
+        reject_unsupported(*c, "'not' over 'and' (a disjunction)");
+    for (std::size_t i = 1; i < c->items.size(); ++i)
+        add_condition(c->items[i], what, out);
 }
 
 } // namespace envdesign::pddl

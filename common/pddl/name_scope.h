@@ -13,7 +13,8 @@ namespace envdesign::pddl {
 
 class NameScope {
 public:
-    NameScope(const Domain &domain, std::string context) : domain_(domain), context_(std::move(context)) {}
+    NameScope(const Domain &domain, std::string context)
+        : domain_(domain), context_(std::move(context)) {}
 
     void add_variables(const std::vector<TypedName> &variables);
     void add_objects(const std::vector<TypedName> &objects);
@@ -21,14 +22,17 @@ public:
 
     // (p arg ...) checked against the predicates (or, when `functions`, the functions).
     Atom parse_atom(const SExpr &e, bool functions = false) const;
-    // An atom, (not atom), (= a b) or (not (= a b)).
+    // An atom, (not atom), (= a b) or (not (= a b)): an effect's literal.
     Literal parse_literal(const SExpr &e) const;
-    // (and ...) of literals, a single literal, or () for "true"; nested ands are flattened.
+    // A condition: (and ...) of literals, a single literal, or () for "true"; nested ands are
+    // flattened and double negations cancelled.
     std::vector<Literal> parse_conjunction(const SExpr &e, const std::string &what) const;
 
 private:
+    void add_condition(const SExpr &e, const std::string &what, std::vector<Literal> &out) const;
+
     const Domain &domain_;
-    std::string context_;  // "in action 'move'" etc., for messages
+    std::string context_; // "in action 'move'" etc., for messages
     std::map<std::string, std::vector<std::string>> names_;
 };
 
@@ -41,4 +45,4 @@ std::vector<TypedName> parse_typed_list(const std::vector<SExpr> &items, std::si
 // Throws "NAME is not supported" for the PDDL features outside our fragment.
 [[noreturn]] void reject_unsupported(const SExpr &e, const std::string &feature);
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

@@ -71,6 +71,17 @@ CASES = {
     "empty requirements": (DOMAIN.replace(
         ":strips :typing :negative-preconditions :equality :action-costs", ""), PROBLEM),
     ":adl declared, STRIPS used": (DOMAIN.replace(":strips :typing", ":adl :typing"), PROBLEM),
+    ":negation declared": (DOMAIN.replace(":strips", ":strips :negation"), PROBLEM),
+    ":numeric-fluents declared": (DOMAIN.replace(":strips", ":strips :numeric-fluents"),
+                                  PROBLEM),
+    ":durative-actions declared": (DOMAIN.replace(":strips", ":strips :durative-actions"),
+                                   PROBLEM),
+    "double negation over and": (DOMAIN.replace("(and (at ?r ?a) (link ?a ?b) (not (= ?a ?b)))",
+                                                "(not (not (and (at ?r ?a) (link ?a ?b) "
+                                                "(not (= ?a ?b)))))"), PROBLEM),
+    "double negation in an effect": (DOMAIN.replace("(at ?r ?b) (increase",
+                                                    "(not (not (at ?r ?b))) (increase"),
+                                     PROBLEM),
     ":conditional-effects declared": (DOMAIN.replace(":strips", ":strips :conditional-effects"),
                                       PROBLEM),
     "either in a predicate": (DOMAIN.replace("(at ?r - thing", "(at ?r - (either robot thing)"),

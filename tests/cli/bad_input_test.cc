@@ -10,7 +10,7 @@ namespace {
 struct BadInput {
     std::string domain;
     std::string problem;
-    std::string expected;  // "FILE:LINE:COL: error: ..." prefix, FILE relative to data/bad
+    std::string expected; // "FILE:LINE:COL: error: ..." prefix, FILE relative to data/bad
 };
 
 void PrintTo(const BadInput &b, std::ostream *out) { *out << b.domain << " " << b.problem; }
@@ -23,7 +23,8 @@ TEST_P(BadInputTest, ExitsTwoAndNamesThePlace) {
     CommandResult result = run_envdesign("plan " + dir + input.domain + " " + dir + input.problem);
     EXPECT_EQ(result.exit_code, 2) << result.out;
     EXPECT_NE(result.out.find(dir + input.expected), std::string::npos)
-        << "expected '" << input.expected << "' in:\n" << result.out;
+        << "expected '" << input.expected << "' in:\n"
+        << result.out;
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -69,6 +70,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "and false"},
         BadInput{"byte-order-mark.pddl", "ok-problem.pddl",
                  "byte-order-mark.pddl:1:1: error: the file starts with a UTF-8 byte-order mark"},
+        BadInput{"double-negation-effect.pddl", "ok-problem.pddl",
+                 "double-negation-effect.pddl:7:18: error: 'not' inside 'not' is allowed in a "
+                 "condition, not here"},
+        BadInput{"unsupported-requirement.pddl", "ok-problem.pddl",
+                 "unsupported-requirement.pddl:2:26: error: requirement ':durative-actions' is "
+                 "not supported"},
         BadInput{"missing.pddl", "ok-problem.pddl", "missing.pddl:0:0: error: cannot open file"}));
 
 TEST(BadFlags, UnknownHeuristicIsAUsageError) {
@@ -84,5 +91,5 @@ TEST(BadFlags, MissingProblemIsAUsageError) {
     EXPECT_EQ(result.exit_code, 2);
 }
 
-}  // namespace
-}  // namespace envdesign::testing
+} // namespace
+} // namespace envdesign::testing

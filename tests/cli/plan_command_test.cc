@@ -50,6 +50,16 @@ TEST(PlanCommand, PlansDomainsThatTakeLiberties) {
     }
 }
 
+// Without the metric the cost terms are not read: the road without a length is taken.
+TEST(PlanCommand, WithoutTheMetricAnUndefinedCostIsNotRead) {
+    const std::string dir = DATA + "/liberties/";
+    CommandResult r = run_envdesign("plan " + dir + "undefined-cost-domain.pddl " + dir +
+                                        "undefined-cost-no-metric-problem.pddl",
+                                    false);
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_EQ(r.out, "(drive a c)\n; cost = 1 (unit cost)\n");
+}
+
 TEST(PlanCommand, ProvenUnsolvableExitsThree) {
     CommandResult r = run_envdesign(
         "plan --json " + DATA + "/bad/ok-domain.pddl " + DATA + "/unsolvable-problem.pddl", false);

@@ -14,7 +14,7 @@ TEST(Parser, ReadsTypesConstantsAndEither) {
     EXPECT_EQ(d.name, "tiny");
     EXPECT_EQ(d.type_parent.at("room"), "place");
     EXPECT_EQ(d.type_parent.at("corridor"), "place");
-    EXPECT_EQ(d.type_parent.at("place"), "object");  // implicit parent
+    EXPECT_EQ(d.type_parent.at("place"), "object"); // implicit parent
     EXPECT_EQ(d.type_parent.at("robot"), "object");
     ASSERT_EQ(d.constants.size(), 1u);
     EXPECT_EQ(d.constants[0].name, "hub");
@@ -56,8 +56,8 @@ TEST(Parser, IsCaseInsensitiveAndSkipsComments) {
 }
 
 TEST(Parser, RejectsAnInitAtomListedTrueAndFalseWithItsLocation) {
-    Domain d = parse_domain(read_sexpr("(define (domain d) (:predicates (p ?x)))", "d.pddl"),
-                            "d.pddl");
+    Domain d =
+        parse_domain(read_sexpr("(define (domain d) (:predicates (p ?x)))", "d.pddl"), "d.pddl");
     try {
         parse_problem(read_sexpr("(define (problem q) (:domain d) (:objects a)\n"
                                  "  (:init (p a) (not (p a))) (:goal (p a)))",
@@ -72,5 +72,5 @@ TEST(Parser, RejectsAnInitAtomListedTrueAndFalseWithItsLocation) {
     }
 }
 
-}  // namespace
-}  // namespace envdesign::pddl
+} // namespace
+} // namespace envdesign::pddl

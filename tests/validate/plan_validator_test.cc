@@ -61,7 +61,13 @@ TEST(PlanValidator, RejectsAStepWhoseCostHasNoValue) {
     Validation long_way = validate_plan(domain, problem, {"(drive a b)", "(drive b c)"});
     EXPECT_TRUE(long_way.valid) << long_way.error;
     EXPECT_EQ(long_way.cost, 7);
+    // without the metric the cost terms are not read: the direct road is a step of cost 1
+    pddl::Problem no_metric =
+        pddl::parse_problem_file(dir + "undefined-cost-no-metric-problem.pddl", domain);
+    Validation unit = validate_plan(domain, no_metric, {"(drive a c)"});
+    EXPECT_TRUE(unit.valid) << unit.error;
+    EXPECT_EQ(unit.cost, 1);
 }
 
-}  // namespace
-}  // namespace envdesign::validate
+} // namespace
+} // namespace envdesign::validate

@@ -5,5 +5,5 @@
   (:predicates (done ?x) (ready ?x))
   (:action finish
     :parameters (?x)
-    :precondition (and (not (not (ready ?x))) (not (not (not (done ?x)))))
+    :precondition (and (not (not (and (ready ?x)))) (not (not (not (done ?x)))))
     :effect (and (done ?x) (not (ready ?x)))))
