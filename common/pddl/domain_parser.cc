@@ -102,6 +102,11 @@ void parse_types(const SExpr &section, Domain &domain) {
     }
 }
 
+bool same_types(const std::vector<TypedName> &a, const std::vector<TypedName> &b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](const TypedName &x, const TypedName &y) { return x.types == y.types; });
+}
+
 std::vector<Predicate> parse_signatures(const SExpr &section, const Domain &domain,
                                         const std::string &kind) {
     std::vector<Predicate> result;
@@ -115,10 +120,18 @@ std::vector<Predicate> parse_signatures(const SExpr &section, const Domain &doma
         if (!p.is_list || p.items.empty() || p.items[0].is_list)
             throw ParseError(p.location, "expected a " + kind + " declaration '(name ?x ...)'");
         const std::string &name = p.items[0].symbol;
-        if (!seen.insert(name).second)
-            throw ParseError(p.location, "duplicate " + kind + " '" + name + "'");
-        result.push_back(
-            {name, parse_typed_list(p.items, 1, "placeholder", &domain.type_parent), p.location});
+        auto parameters = parse_typed_list(p.items, 1, "placeholder", &domain.type_parent);
+        if (!seen.insert(name).second) {
+            // Declared twice alike is harmless (Fast Downward reads any repeat); declared
+            // twice otherwise is ambiguous (Fast Downward would take the last one silently).
+            auto first = std::find_if(result.begin(), result.end(),
+                                      [&](const Predicate &q) { return q.name == name; });
+            if (same_types(first->parameters, parameters))
+                continue;
+            throw ParseError(p.location,
+                             kind + " '" + name + "' is declared twice with different parameters");
+        }
+        result.push_back({name, std::move(parameters), p.location});
     }
     return result;
 }

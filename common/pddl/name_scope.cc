@@ -66,8 +66,8 @@ std::vector<TypedName> parse_typed_list(const std::vector<SExpr> &items, std::si
             if (i + 1 >= items.size())
                 throw ParseError(item.location, "'-' must be followed by a type");
             auto type_names = parse_type_spec(items[++i], types);
-            if (untyped_from == result.size())
-                throw ParseError(item.location, "'-' without any " + kind + " before it");
+            // A '- type' with nothing before it types nothing: Fast Downward warns and goes
+            // on ("a - t - u"); no domain of the IPC collection needs it.
             for (std::size_t j = untyped_from; j < result.size(); ++j)
                 result[j].types = type_names;
             untyped_from = result.size();

@@ -47,7 +47,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"unknown-requirement.pddl", "ok-problem.pddl",
                  "unknown-requirement.pddl:2:26: error: unknown requirement ':teleportation'"},
         BadInput{"duplicate-predicate.pddl", "ok-problem.pddl",
-                 "duplicate-predicate.pddl:4:16: error: duplicate predicate 'p'"},
+                 "duplicate-predicate.pddl:4:16: error: predicate 'p' is declared twice with "
+                 "different parameters"},
         BadInput{"ok-domain.pddl", "duplicate-object-problem.pddl",
                  "duplicate-object-problem.pddl:4:13: error: duplicate object 'o1'"},
         BadInput{"unsupported-forall.pddl", "ok-problem.pddl",

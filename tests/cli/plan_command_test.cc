@@ -41,6 +41,8 @@ TEST(PlanCommand, PlansDomainsThatTakeLiberties) {
                           Case{"beyond-requirements", "; cost = 4 (general cost)"},
                           Case{"init-listed-false", "; cost = 3 (general cost)"},
                           Case{"double-negation", "; cost = 1 (unit cost)"},
+                          Case{"predicate-declared-twice", "; cost = 2 (unit cost)"},
+                          Case{"dangling-type", "; cost = 1 (unit cost)"},
                           // the road without a length is not taken: 3 + 4, not 0
                           Case{"undefined-cost", "; cost = 7 (general cost)"}}) {
         CommandResult r = run_envdesign(

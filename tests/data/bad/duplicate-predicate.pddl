@@ -1,7 +1,7 @@
 (define (domain d)
   (:requirements :strips)
   (:predicates (p ?x)
-               (p ?y))
+               (p ?x ?y))
   (:action a
     :parameters (?x)
     :precondition (p ?x)

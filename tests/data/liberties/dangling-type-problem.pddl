@@ -1,0 +1,5 @@
+(define (problem dangling-type-1)
+  (:domain dangling-type)
+  (:objects a b c - place - spot)
+  (:init (at a) (link a b) (link b c) (link a c))
+  (:goal (at c)))

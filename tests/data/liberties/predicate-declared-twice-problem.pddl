@@ -1,0 +1,5 @@
+(define (problem predicate-declared-twice-1)
+  (:domain predicate-declared-twice)
+  (:objects a b c)
+  (:init (at a) (link a b) (link b c))
+  (:goal (at c)))
