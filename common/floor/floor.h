@@ -1,0 +1,56 @@
+#pragma once
+// A floor as FLOORS.md reads it: the places of one fleet graph with their coordinates in
+// metres, the lanes the robot drives, and the walls that block people's line of sight. The
+// readers (building_map.h) make one; floor_graph.h turns it into the two models.
+//
+//   Floor floor = read_building_map("site.building.yaml", {.level = "L1", .graph = 0});
+//   FloorGraph graph = build_floor_graph(floor, /*sight_m=*/10);
+
+#include "geometry.h"
+
+#include <string>
+#include <vector>
+
+namespace envdesign::floor {
+
+// Bounds on what is read, so that a hostile or mistaken map is refused, not run for hours:
+// sight lines cost O(places^2), each tested against the walls near it.
+inline constexpr std::size_t MAX_PLACES = 10000;
+inline constexpr std::size_t MAX_WALLS = 100000;
+inline constexpr std::size_t MAX_TASKS = 10000;
+inline constexpr double MAX_COORDINATE_M = 1e6; // |x|, |y| in metres
+
+struct Place {
+    int vertex = 0;   // the vertex number in the map; the PDDL object is "v<vertex>"
+    std::string name; // the vertex's name in the map; empty if it has none
+    Point at;         // metres, y up
+    Point raw;        // as written in the map (pixels or metres): walls are tested here
+};
+
+// A directed edge between two places, by vertex number.
+struct Edge {
+    int from = 0;
+    int to = 0;
+    friend bool operator<(const Edge &a, const Edge &b) {
+        return a.from != b.from ? a.from < b.from : a.to < b.to;
+    }
+    friend bool operator==(const Edge &a, const Edge &b) {
+        return a.from == b.from && a.to == b.to;
+    }
+};
+
+struct Floor {
+    std::string source;             // the map file
+    std::string level;              // the level read
+    int graph = 0;                  // the fleet graph read (lanes' graph_idx)
+    double scale = 1;               // metres per map unit
+    std::vector<Place> places;      // ascending vertex number
+    std::vector<Edge> lanes;        // robot edges: sorted, no duplicates, no self-loops
+    std::vector<Segment> walls_raw; // map coordinates, as Place::raw
+    std::vector<Segment> walls;     // metres, y up
+};
+
+// "v<vertex>".
+std::string object_name(int vertex);
+
+} // namespace envdesign::floor

@@ -1,0 +1,38 @@
+#pragma once
+// The two models of a floor (FLOORS.md "The two models"): the robot's edges are its lanes;
+// people also believe in every sight line, a straight move between two places at most
+// `sight` metres apart that crosses no wall. Lengths are whole decimetres.
+//
+//   FloorGraph graph = build_floor_graph(floor, 10.0);
+//   graph.human_only   // sight lines that are not robot edges, sorted by (from, to)
+//   length_dm(a, b)    // the cost of moving between two places
+
+#include "floor.h"
+
+#include <map>
+#include <vector>
+
+namespace envdesign::floor {
+
+struct FloorGraph {
+    std::vector<Edge> robot;          // = Floor::lanes
+    std::vector<Edge> human_only;     // both directions of each sight line not on a lane
+    std::map<int, std::size_t> index; // vertex number -> position in Floor::places
+};
+
+// Builds both models. `sight_m` >= 0.
+FloorGraph build_floor_graph(const Floor &floor, double sight_m);
+
+// |ab| in decimetres, rounded to the nearest integer (halves away from zero), at least 1.
+long long length_dm(const Place &a, const Place &b);
+
+// Which places the robot can reach from the place `from` along its edges (vertex number ->
+// reachable).
+std::map<int, bool> robot_reachable(const FloorGraph &graph, int from);
+
+// The sight lines among `places` (unordered pairs, vertex numbers, first < second) no wall
+// of `walls_raw` blocks; walls are looked up in a grid so that a large floor stays fast.
+std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vector<Segment> &walls,
+                              const std::vector<Segment> &walls_raw, double sight_m);
+
+} // namespace envdesign::floor

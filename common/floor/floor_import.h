@@ -1,0 +1,51 @@
+#pragma once
+// `envdesign floor import`: an Open-RMF building map -> a design problem in a folder, by
+// FLOORS.md. The one entry point of the layer for the CLI.
+//
+//   ImportOptions options;
+//   options.map = "warehouse.building.yaml";
+//   options.out_dir = "warehouse";
+//   ImportReport report = import_floor(options);   // warehouse/design.textproto, ...
+//
+// Bad input throws pddl::ParseError (FILE:LINE:COL) or FloorError; a file that cannot be
+// written throws std::runtime_error.
+
+#include "building_map.h"
+#include "candidates.h"
+#include "floor_problem.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace envdesign::floor {
+
+struct ImportOptions {
+    std::string map;
+    std::string out_dir;
+    BuildingMapOptions map_options;
+    std::optional<std::string> tasks_csv;
+    std::optional<std::string> zones_json;
+    double sight_m = 10;
+    CandidateOptions candidates;
+    Weights weights;
+};
+
+struct ImportReport {
+    std::string spec_path; // out_dir/design.textproto
+    std::size_t places = 0;
+    std::size_t robot_edges = 0;
+    std::size_t human_only_edges = 0;
+    std::size_t tasks = 0;
+    std::size_t candidates = 0;
+    std::vector<std::string> warnings; // dropped tasks, skipped zones
+};
+
+// Reads, builds and checks the problem without writing anything.
+FloorProblem build_floor_problem(const ImportOptions &options, std::vector<std::string> &warnings);
+
+// build_floor_problem, then writes the files into options.out_dir (created if missing;
+// files of the same names are replaced).
+ImportReport import_floor(const ImportOptions &options);
+
+} // namespace envdesign::floor
