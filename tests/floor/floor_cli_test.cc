@@ -1,0 +1,145 @@
+// `envdesign floor import` as a user runs it: the real binary on maps the test writes, then
+// `envdesign design` on what it wrote; and its bad input, exit code 2 with FILE:LINE:COL.
+
+#include "../cli/run_command.h"
+#include "map_text.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace envdesign::floor {
+namespace {
+
+using envdesign::testing::run_envdesign;
+using testing::MapText;
+namespace fs = std::filesystem;
+
+// An L in pixels (0.05 m a pixel): dock (0,0) -> v1 (0,-80 px = 4 m up) -> shelf (4 m, 4 m).
+// The robot drives 8 m; people expect the 5.66 m diagonal.
+MapText l_shape() {
+    MapText m;
+    m.vertices = {{0, 0, "dock"}, {0, -80, ""}, {80, -80, "shelf"}, {200, 0, ""}};
+    m.lanes = {{0, 1, true}, {1, 2, true}};
+    m.measurements = {{0, 3, 10.0}};
+    return m;
+}
+
+nlohmann::json design_json(const std::string &spec, const std::string &flags = "") {
+    auto r = run_envdesign("design " + spec + " --json " + flags, false);
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    return nlohmann::json::parse(r.out);
+}
+
+TEST(FloorCli, ImportThenDesignChoosesTheTapeThatMakesTheRobotExplicable) {
+    fs::path dir = testing::scratch_dir("l-shape");
+    std::string map = testing::write_text(dir / "l.building.yaml", l_shape().yaml());
+    auto r = run_envdesign("floor import " + map + " -o " + (dir / "out").string());
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("3 places, 4 robot edges, 2 human-only edges, 2 tasks, 2 candidates"),
+              std::string::npos)
+        << r.out;
+    std::string spec = testing::read_text(dir / "out/design.textproto");
+    EXPECT_NE(spec.find("task { name: \"v0-v2\" problem: \"tasks/v0-v2.pddl\" human_problem: "
+                        "\"tasks/v0-v2-human.pddl\" }"),
+              std::string::npos)
+        << spec;
+    EXPECT_NE(spec.find("modification {\n  name: \"tape-v0-v2\" cost: 5.66\n  edit { model: HUMAN "
+                        "remove_init: \"(connected v0 v2)\" }\n  edit { model: HUMAN remove_init: "
+                        "\"(connected v2 v0)\" }\n}"),
+              std::string::npos);
+    EXPECT_NE(spec.find("name: \"lane-v0-v2\" cost: 56.57"), std::string::npos);
+    EXPECT_NE(spec.find("alpha: 1 beta: 1 kappa: 0 gamma: 1 horizon: 1\ndistance: COST_DIFF"),
+              std::string::npos);
+    EXPECT_TRUE(fs::exists(dir / "out/floor.json"));
+    auto result = design_json((dir / "out/design.textproto").string());
+    // IE = 80 dm along the lanes - 57 dm straight, each way; the tape (5.66) removes it.
+    EXPECT_EQ(result["design"], nlohmann::json::array({"tape-v0-v2"}));
+    EXPECT_DOUBLE_EQ(result["objective"].get<double>(), 5.66);
+    EXPECT_DOUBLE_EQ(result["baseline"]["objective"].get<double>(), 23);
+}
+
+// A small site: two aisles with a rack (walls) between, named stations, a one-way lane,
+// a zone file: tape, lane and zone candidates together.
+MapText small_site() {
+    MapText m;
+    m.coordinate_system = "cartesian_meters";
+    m.vertices = {{0, 0, "in"}, {0, 6, ""}, {6, 6, "pick"},  {6, 0, "out"},
+                  {3, 1, ""},   {3, 5, ""}, {9, 3, "charge"}};
+    m.lanes = {{0, 1, true}, {1, 2, true}, {2, 3, false}, {3, 0, true}, {2, 6, true}, {6, 3, true}};
+    m.walls = {{4, 5}}; // a rack across the square's middle
+    return m;
+}
+
+const char *SITE_ZONES = R"({"zones": [
+ {"zoneId": "close-gap", "zoneType": "BLOCKED", "cost": 4,
+  "vertices": [{"x": 2.5, "y": 5.5}, {"x": 3.5, "y": 5.5}, {"x": 3.5, "y": 6.5}, {"x": 2.5, "y": 6.5}]},
+ {"zoneId": "mark-east", "zoneType": "LINE_GUIDED", "cost": 1.5,
+  "vertices": [{"x": 5.5, "y": 0.5}, {"x": 9.5, "y": 0.5}, {"x": 9.5, "y": 5.5}, {"x": 5.5, "y": 5.5}]}
+]})";
+
+TEST(FloorCli, TheWrittenSpecGivesTheDesignAnExhaustiveSearchFinds) {
+    fs::path dir = testing::scratch_dir("site");
+    std::string map = testing::write_text(dir / "site.building.yaml", small_site().yaml());
+    std::string zones = testing::write_text(dir / "zones.json", SITE_ZONES);
+    auto r = run_envdesign("floor import " + map + " -o " + (dir / "out").string() + " --zones " +
+                           zones +
+                           " --sight 7 --tape-cost 2 --beta 0.5 --horizon 3"
+                           " --gamma 0.9 --kappa 0.01");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    std::string spec = (dir / "out/design.textproto").string();
+    auto witness = design_json(spec);
+    auto exhaustive = design_json(spec, "--search exhaustive");
+    EXPECT_EQ(witness["design"], exhaustive["design"]);
+    EXPECT_NEAR(witness["objective"].get<double>(), exhaustive["objective"].get<double>(), 1e-9);
+    EXPECT_GT(witness["baseline"]["objective"].get<double>(), witness["objective"].get<double>());
+    EXPECT_GE(exhaustive["configurations_evaluated"].get<int>(), 64);
+}
+
+std::string run_import(const std::string &name, const std::string &yaml, const std::string &flags,
+                       int expected_code) {
+    fs::path dir = testing::scratch_dir(name);
+    std::string map = testing::write_text(dir / "m.building.yaml", yaml);
+    auto r = run_envdesign("floor import " + map + " -o " + (dir / "out").string() + " " + flags);
+    EXPECT_EQ(r.exit_code, expected_code) << r.out;
+    return r.out;
+}
+
+TEST(FloorCli, Wgs84IsRefusedWithExitTwo) {
+    MapText m = l_shape();
+    m.coordinate_system = "wgs84";
+    std::string out = run_import("wgs84", m.yaml(), "", 2);
+    EXPECT_NE(out.find("m.building.yaml:1:20: error: coordinate system 'wgs84' is not supported"),
+              std::string::npos)
+        << out;
+}
+
+TEST(FloorCli, BadInputIsExitTwoWithItsPlace) {
+    std::string out = run_import("level", l_shape().yaml(), "--level L7", 2);
+    EXPECT_NE(out.find("no level 'L7'; the levels are: L1"), std::string::npos) << out;
+    out = run_import("graph", l_shape().yaml(), "--graph 3", 2);
+    EXPECT_NE(out.find("no lane of graph 3 on this level; its graphs are: 0"), std::string::npos);
+    out = run_import("yaml", "levels: {L1: [}\n", "", 2);
+    EXPECT_NE(out.find("m.building.yaml:1:"), std::string::npos) << out;
+    fs::path dir = testing::scratch_dir("csv");
+    std::string csv = testing::write_text(dir / "t.csv", "from,to,weight\ndock,office,1\n");
+    out = run_import("csv", l_shape().yaml(), "--tasks " + csv, 2);
+    EXPECT_NE(out.find(csv + ":2:6: error: no place 'office'"), std::string::npos) << out;
+    out = run_import("sight", l_shape().yaml(), "--sight -1", 2);
+    EXPECT_NE(out.find("--sight must be a finite number >= 0"), std::string::npos) << out;
+    out = run_import("json", l_shape().yaml(), "--json --graph 3", 2);
+    EXPECT_NE(out.find("\"exit_code\":2"), std::string::npos) << out;
+}
+
+TEST(FloorCli, UnreachableTasksAreDroppedWithAWarning) {
+    MapText m = l_shape();
+    m.lanes = {{0, 1}, {1, 2}}; // one way: shelf cannot get back to the dock
+    std::string out = run_import("oneway", m.yaml(), "", 0);
+    EXPECT_NE(out.find("task v2-v0 dropped: the robot's lanes do not lead from v2 (shelf) to v0 "
+                       "(dock)"),
+              std::string::npos)
+        << out;
+    EXPECT_NE(out.find("1 tasks"), std::string::npos);
+}
+
+} // namespace
+} // namespace envdesign::floor

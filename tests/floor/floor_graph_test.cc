@@ -1,0 +1,129 @@
+// The two models (FLOORS.md "The two models"): robot edges are lanes; people also expect
+// every sight line within --sight that no wall crosses; lengths in whole decimetres.
+
+#include "floor/building_map.h"
+#include "floor/floor_graph.h"
+
+#include "map_text.h"
+
+#include <gtest/gtest.h>
+
+namespace envdesign::floor {
+namespace {
+
+using testing::MapText;
+
+// p (0,0) -> m (3,3) -> q (6,0), both lanes two-way; p and q see each other across 6 m.
+// Vertices 3 and 4 are free for walls and doors.
+MapText detour(std::pair<double, double> w0, std::pair<double, double> w1) {
+    MapText m;
+    m.coordinate_system = "cartesian_meters";
+    m.vertices = {{0, 0, "p"},
+                  {3, 3, "m"},
+                  {6, 0, "q"},
+                  {w0.first, w0.second, ""},
+                  {w1.first, w1.second, ""}};
+    m.lanes = {{0, 1, true}, {1, 2, true}};
+    return m;
+}
+
+FloorGraph graph_of(const MapText &m, double sight = 10) {
+    return build_floor_graph(parse_building_map(m.yaml(), "t.building.yaml", {}), sight);
+}
+
+const std::vector<Edge> P_Q_BOTH_WAYS{{0, 2}, {2, 0}};
+
+TEST(FloorGraph, ASightLineNotOnALaneIsHumanOnlyInBothDirections) {
+    FloorGraph g = graph_of(detour({20, 20}, {21, 21}));
+    EXPECT_EQ(g.robot.size(), 4u);
+    EXPECT_EQ(g.human_only, P_Q_BOTH_WAYS);
+}
+
+TEST(FloorGraph, AWallAcrossTheSightLineRemovesIt) {
+    MapText m = detour({3, -1}, {3, 1});
+    m.walls = {{3, 4}};
+    EXPECT_TRUE(graph_of(m).human_only.empty());
+}
+
+TEST(FloorGraph, AWallTouchingTheSightLineOnlyAtItsEndDoesNotBlock) {
+    MapText m = detour({6, 0}, {6, 5}); // a wall from q's very point upwards
+    m.walls = {{3, 4}};
+    EXPECT_EQ(graph_of(m).human_only, P_Q_BOTH_WAYS);
+    m.walls = {{2, 4}}; // the same wall drawn from q itself
+    EXPECT_EQ(graph_of(m).human_only, P_Q_BOTH_WAYS);
+}
+
+TEST(FloorGraph, AWallRunningAlongTheSightLineBlocks) {
+    MapText m = detour({2, 0}, {4, 0});
+    m.walls = {{3, 4}};
+    EXPECT_TRUE(graph_of(m).human_only.empty());
+}
+
+TEST(FloorGraph, DoorsNeverBlock) {
+    MapText m = detour({3, -1}, {3, 1});
+    m.doors = {{3, 4}};
+    EXPECT_EQ(graph_of(m).human_only, P_Q_BOTH_WAYS);
+}
+
+TEST(FloorGraph, SightLinesLongerThanSightAreNotExpected) {
+    MapText m = detour({20, 20}, {21, 21});
+    EXPECT_TRUE(graph_of(m, 5.99).human_only.empty());
+    EXPECT_EQ(graph_of(m, 6.0).human_only, P_Q_BOTH_WAYS); // |pq| <= sight
+}
+
+TEST(FloorGraph, AOneWayLaneLeavesItsReverseToPeople) {
+    MapText m = detour({20, 20}, {21, 21});
+    m.lanes = {{0, 1, std::nullopt}, {1, 2, true}, {2, 0, false}};
+    // p->m is a lane, m->p only a sight line; q->p a lane, p->q only a sight line.
+    std::vector<Edge> expected{{0, 2}, {1, 0}};
+    EXPECT_EQ(graph_of(m).human_only, expected);
+}
+
+TEST(FloorGraph, LengthsAreDecimetresRoundedHalfAwayFromZeroAtLeastOne) {
+    auto at = [](double x) { return Place{0, "", {x, 0}, {x, 0}}; };
+    EXPECT_EQ(length_dm(at(0), at(0.25)), 3); // 2.5 dm -> 3
+    EXPECT_EQ(length_dm(at(0), at(0.94)), 9);
+    EXPECT_EQ(length_dm(at(0), at(0.04)), 1); // 0.4 dm, but at least 1
+    EXPECT_EQ(length_dm(at(0), at(0)), 1);
+    Place a{0, "", {0, 0}, {}}, b{1, "", {3, 4}, {}};
+    EXPECT_EQ(length_dm(a, b), 50);
+}
+
+TEST(FloorGraph, ReachabilityFollowsTheRobotEdgesOnly) {
+    MapText m = detour({20, 20}, {21, 21});
+    m.lanes = {{0, 1, std::nullopt}, {1, 2, std::nullopt}};
+    FloorGraph g = graph_of(m);
+    EXPECT_TRUE(robot_reachable(g, 0)[2]);
+    EXPECT_FALSE(robot_reachable(g, 2)[0]); // the sight line q->p is no way for the robot
+}
+
+TEST(FloorGraph, ManyPlacesAndWallsStayFastAndAgreeWithTheDirectTest) {
+    // A 30 x 30 grid of places 1 m apart with a wall between each pair of columns' rows 10-20.
+    Floor f;
+    for (int i = 0; i < 900; ++i) {
+        Point p{double(i % 30), double(i / 30)};
+        f.places.push_back({i, "", p, p});
+    }
+    for (int c = 0; c < 29; ++c) {
+        Segment w{{c + 0.5, 10}, {c + 0.5, 20}};
+        f.walls.push_back(w);
+        f.walls_raw.push_back(w);
+    }
+    std::vector<Edge> fast = sight_lines(f.places, f.walls, f.walls_raw, 3);
+    std::size_t direct = 0;
+    for (std::size_t i = 0; i < f.places.size(); ++i)
+        for (std::size_t j = i + 1; j < f.places.size(); ++j) {
+            Segment s{f.places[i].at, f.places[j].at};
+            if (distance(s.a, s.b) > 3)
+                continue;
+            bool blocked = false;
+            for (const auto &w : f.walls)
+                blocked = blocked || sight_blocked(s, w);
+            direct += !blocked;
+        }
+    EXPECT_EQ(fast.size(), direct);
+    EXPECT_GT(direct, 10000u);
+}
+
+} // namespace
+} // namespace envdesign::floor
