@@ -19,6 +19,7 @@ PACKAGES=(
     gnuplot-nox  # the interplay plot (tests/benchmarks/paper), the plots of envdesign report
     chromium  # tests/cli/report_test.py renders the report headless
     clang libclang-rt-14-dev  # tests/fuzz: libFuzzer, ASan and UBSan runtimes; the clang build
+    libyaml-cpp-dev  # envdesign floor import reads Open-RMF building maps (common/floor)
 )
 
 missing=()
