@@ -5,6 +5,7 @@
 #include "design_command.h"
 #include "evaluate_command.h"
 #include "explicable_command.h"
+#include "floor_command.h"
 #include "plan_command.h"
 #include "report_command.h"
 #include "status_command.h"
@@ -94,6 +95,10 @@ int main(int argc, char **argv) {
         "watch", "print results, progress and task distribution estimates on a bus as they pass");
     envdesign::cli::add_watch_flags(*watch, watch_flags);
 
+    envdesign::cli::FloorFlags floor_flags;
+    auto *floor = app.add_subcommand("floor", "fleet maps -> design problems (docs/floors.md)");
+    envdesign::cli::add_floor_flags(*floor, floor_flags);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp &e) {
@@ -124,6 +129,8 @@ int main(int argc, char **argv) {
             return with_output_checked(envdesign::cli::run_status(status_flags));
         if (*watch)
             return with_output_checked(envdesign::cli::run_watch(watch_flags));
+        if (*floor)
+            return with_output_checked(envdesign::cli::run_floor(floor_flags));
     } catch (const envdesign::pddl::ParseError &e) {
         return envdesign::cli::report_failure(json, 2, e.message(), e.location());
     } catch (const envdesign::cli::CommandError &e) {

@@ -122,8 +122,12 @@ std::vector<Zone> parse_zones(const std::string &text, const std::string &path,
     try {
         doc = json::parse(text);
     } catch (const json::parse_error &e) {
+        // e.what() is "[json.exception...] parse error at line L, column C: WHY": keep WHY.
+        std::string why = e.what();
+        std::size_t colon = why.find(": ", why.find("column"));
+        why = colon == std::string::npos ? why : why.substr(colon + 2);
         throw pddl::ParseError(location_of(text, path, e.byte ? e.byte - 1 : 0),
-                               std::string("malformed JSON: ") + e.what());
+                               "malformed JSON: " + why);
     }
     ZoneFile file(text, path);
     if (!doc.is_object() || !doc.contains("zones") || !doc["zones"].is_array())

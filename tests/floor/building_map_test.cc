@@ -5,6 +5,8 @@
 
 #include "map_text.h"
 
+#include "pddl/parse_error.h"
+
 #include <gtest/gtest.h>
 
 namespace envdesign::floor {
@@ -138,7 +140,7 @@ TEST(BuildingMap, MissingKeysAndBadValuesNameTheirLine) {
     MapText m = pixel_map();
     m.lanes.push_back({2, 9, true});
     std::string e = error_of(m.yaml());
-    EXPECT_NE(e.find(":13:17: error: the lane's end 9 is not a vertex (the level has 4)"),
+    EXPECT_NE(e.find(":12:13: error: the lane's end 9 is not a vertex (the level has 4)"),
               std::string::npos)
         << e << m.yaml();
 }

@@ -7,6 +7,8 @@
 
 #include "map_text.h"
 
+#include "pddl/parse_error.h"
+
 #include <gtest/gtest.h>
 
 namespace envdesign::floor {
@@ -121,7 +123,10 @@ std::string zone_error(const std::string &json) {
 
 TEST(Zones, FaultsAreAtTheirLine) {
     std::string e = zone_error("{\"zones\": [\n  {\"zoneId\": \"a\",,}\n]}");
-    EXPECT_NE(e.find("zones.json:2:17: error: malformed JSON"), std::string::npos) << e;
+    EXPECT_NE(
+        e.find("zones.json:2:18: error: malformed JSON: syntax error while parsing object key"),
+        std::string::npos)
+        << e;
     e = zone_error(
         "{\"zones\": [\n {\"zoneId\": \"a\", \"zoneType\": \"BLOCKED\",\n"
         "  \"vertices\": [{\"x\": 0, \"y\": 0}, {\"x\": 1, \"y\": 0}, {\"x\": 1, \"y\": 1}]}\n]}");
@@ -138,7 +143,7 @@ TEST(Zones, FaultsAreAtTheirLine) {
     EXPECT_NE(e.find("is not a finite number within 1e6"), std::string::npos) << e;
     e = zone_error("{\"zones\": [{\"zoneId\": \"a\", \"zoneType\": \"SPEED_LIMIT\"},\n"
                    " {\"zoneId\": \"a\", \"zoneType\": \"SPEED_LIMIT\"}]}");
-    EXPECT_NE(e.find("zones.json:2:14: error: zone 1: zoneId 'a' is given twice"),
+    EXPECT_NE(e.find("zones.json:2:13: error: zone 1: zoneId 'a' is given twice"),
               std::string::npos)
         << e;
     EXPECT_NE(zone_error("[]").find("zones.json:1:1: error: a zone file is"), std::string::npos);

@@ -20,7 +20,7 @@ struct MapText {
     };
     struct Lane {
         int from, to;
-        std::optional<bool> bidirectional; // absent: no parameter written
+        std::optional<bool> bidirectional = std::nullopt; // absent: no parameter written
         int graph = 0;
     };
     std::string coordinate_system; // empty: no key

@@ -7,6 +7,8 @@
 
 #include "map_text.h"
 
+#include "pddl/parse_error.h"
+
 #include <gtest/gtest.h>
 
 namespace envdesign::floor {

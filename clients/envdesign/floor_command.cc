@@ -1,0 +1,103 @@
+#include "floor_command.h"
+
+#include "cli_error.h"
+
+#include "floor/floor_error.h"
+
+#include <nlohmann/json.hpp>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <iostream>
+
+namespace envdesign::cli {
+
+namespace {
+
+void add_import_flags(CLI::App &import, FloorFlags &f) {
+    floor::ImportOptions &o = f.options;
+    import.add_option("map", o.map, "Open-RMF building map (*.building.yaml)")->required();
+    import.add_option("-o,--output", o.out_dir, "folder to write the design problem into")
+        ->required();
+    import.add_option("--level", f.level, "the level to read (default: the only one)");
+    import.add_option("--graph", o.map_options.graph, "the fleet graph (lanes' graph_idx)")
+        ->capture_default_str();
+    import.add_option("--tasks", o.tasks_csv,
+                      "CSV from,to,weight (default: every ordered "
+                      "pair of named places)");
+    import.add_option("--zones", o.zones_json, "VDA 5050 zoneSet JSON of candidate zones");
+    import.add_option("--sight", o.sight_m, "metres people see a straight move across")
+        ->capture_default_str();
+    import.add_option("--tape-cost", o.candidates.tape_cost_per_m, "cost of tape per metre")
+        ->capture_default_str();
+    import.add_option("--lane-cost", o.candidates.lane_cost_per_m, "cost of a new lane per metre")
+        ->capture_default_str();
+    import.add_option("--candidates", f.candidates, "kinds of candidates: tape,lane,zones")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"tape", "lane", "zones"}))
+        ->capture_default_str();
+    import.add_option("--alpha", o.weights.alpha, "weight of inexplicability")
+        ->capture_default_str();
+    import.add_option("--beta", o.weights.beta, "weight of the design cost")->capture_default_str();
+    import.add_option("--kappa", o.weights.kappa, "weight of the robot's cost")
+        ->capture_default_str();
+    import.add_option("--horizon", o.weights.horizon, "times the tasks are done")
+        ->capture_default_str();
+    import.add_option("--gamma", o.weights.gamma, "discount over the horizon")
+        ->capture_default_str();
+    import.add_flag("--json", f.json, "print the summary as JSON");
+}
+
+bool chosen(const std::vector<std::string> &kinds, const std::string &kind) {
+    return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+}
+
+void print_report(const floor::ImportReport &r, bool json) {
+    if (json) {
+        nlohmann::json out = {{"status", "ok"},
+                              {"spec", r.spec_path},
+                              {"places", r.places},
+                              {"robot_edges", r.robot_edges},
+                              {"human_only_edges", r.human_only_edges},
+                              {"tasks", r.tasks},
+                              {"candidates", r.candidates},
+                              {"warnings", r.warnings}};
+        std::cout << out.dump() << "\n";
+        return;
+    }
+    std::cout << "wrote " << r.spec_path << ": " << r.places << " places, " << r.robot_edges
+              << " robot edges, " << r.human_only_edges << " human-only edges, " << r.tasks
+              << " tasks, " << r.candidates << " candidates\n"
+              << "next: envdesign design " << r.spec_path << "\n";
+}
+
+} // namespace
+
+void add_floor_flags(CLI::App &command, FloorFlags &flags) {
+    command.require_subcommand(1);
+    flags.import = command.add_subcommand(
+        "import", "an Open-RMF building map -> a design problem (design.textproto, PDDL, "
+                  "floor.json)");
+    add_import_flags(*flags.import, flags);
+}
+
+int run_floor(FloorFlags &flags) {
+    floor::ImportOptions &o = flags.options;
+    if (!flags.level.empty())
+        o.map_options.level = flags.level;
+    o.candidates.tapes = chosen(flags.candidates, "tape");
+    o.candidates.lanes = chosen(flags.candidates, "lane");
+    o.candidates.zones = chosen(flags.candidates, "zones");
+    floor::ImportReport report;
+    try {
+        report = floor::import_floor(o);
+    } catch (const floor::FloorError &e) {
+        throw CommandError(2, e.what());
+    }
+    for (const auto &w : report.warnings)
+        spdlog::warn("{}", w);
+    print_report(report, flags.json);
+    return 0;
+}
+
+} // namespace envdesign::cli

@@ -1,0 +1,26 @@
+#pragma once
+// `envdesign floor import MAP -o DIR [...]`: an Open-RMF building map -> a design problem in
+// DIR (design.textproto, domain.pddl, tasks/, floor.json), by FLOORS.md; docs/floors.md.
+// Exit 0 written, 2 bad input (FILE:LINE:COL for a fault in a file), 1 DIR not writable.
+
+#include "floor/floor_import.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace envdesign::cli {
+
+struct FloorFlags {
+    CLI::App *import = nullptr; // the `import` subcommand, to know it was chosen
+    floor::ImportOptions options;
+    std::string level;
+    std::vector<std::string> candidates{"tape", "lane", "zones"};
+    bool json = false;
+};
+
+void add_floor_flags(CLI::App &command, FloorFlags &flags);
+int run_floor(FloorFlags &flags);
+
+} // namespace envdesign::cli
