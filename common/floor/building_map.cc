@@ -34,8 +34,12 @@ YAML::Node choose_level(const YamlFields &yaml, const YAML::Node &root,
     if (!levels.IsMap())
         yaml.fail(levels, "'levels' is not a map");
     std::vector<std::string> names;
-    for (const auto &kv : levels)
-        names.push_back(kv.first.Scalar());
+    for (const auto &kv : levels) {
+        std::string level = yaml.text(kv.first, "a level's name");
+        if (std::find(names.begin(), names.end(), level) != names.end())
+            yaml.fail(kv.first, "level '" + level + "' is given twice");
+        names.push_back(level);
+    }
     if (wanted) {
         if (!levels[*wanted].IsDefined())
             yaml.fail(levels, "no level '" + *wanted + "'; the levels are: " + listed(names));
@@ -89,7 +93,10 @@ std::vector<Lane> read_lanes(const YamlFields &yaml, const YAML::Node &level, st
         YAML::Node bidirectional = yaml.parameter(params, "bidirectional");
         l.bidirectional = bidirectional.IsDefined() && yaml.boolean(bidirectional, "bidirectional");
         YAML::Node graph = yaml.parameter(params, "graph_idx");
-        l.graph = graph.IsDefined() ? static_cast<int>(yaml.integer(graph, "graph_idx")) : 0;
+        long long g = graph.IsDefined() ? yaml.integer(graph, "graph_idx") : 0;
+        if (g < 0 || g > 1000000)
+            yaml.fail(graph, "graph_idx " + std::to_string(g) + " is not a graph number");
+        l.graph = static_cast<int>(g);
         lanes.push_back(l);
     }
     return lanes;
@@ -250,7 +257,7 @@ Floor parse_building_map(const std::string &text, const std::string &path,
     YamlFields yaml(path);
     YAML::Node root = yaml.load(text);
     if (!root.IsMap())
-        yaml.fail(root, "a building map is a YAML map with 'levels'");
+        throw pddl::ParseError({path, 1, 1}, "a building map is a YAML map with 'levels'");
     try {
         return read_level(yaml, root, options);
     } catch (const YAML::Exception &e) { // a node of an unexpected shape deep inside

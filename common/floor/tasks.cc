@@ -121,7 +121,7 @@ std::vector<FloorTask> parse_tasks_csv(const std::string &text, const std::strin
     std::vector<FloorTask> tasks;
     std::set<std::pair<int, int>> seen;
     bool header = false;
-    std::size_t start = 0;
+    std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0; // a spreadsheet's BOM
     for (int line = 1; start <= text.size(); ++line) {
         std::size_t end = text.find('\n', start);
         std::string row = text.substr(start, end == std::string::npos ? end : end - start);

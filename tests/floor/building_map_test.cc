@@ -171,3 +171,37 @@ TEST(BuildingMap, WallsAreReadInBothFrames) {
 
 } // namespace
 } // namespace envdesign::floor
+
+namespace envdesign::floor {
+namespace {
+
+TEST(BuildingMap, ALevelGivenTwiceAndAGraphNumberOutOfRangeAreRefused) {
+    EXPECT_NE(error_of("levels: {L1: {}, L1: {}}\n").find("1:18: error: level 'L1' is given twice"),
+              std::string::npos)
+        << error_of("levels: {L1: {}, L1: {}}\n");
+    MapText m = pixel_map();
+    std::string yaml = m.yaml();
+    yaml.replace(yaml.find("graph_idx: [2, 0]"), 17, "graph_idx: [2, 99999999999]");
+    EXPECT_NE(error_of(yaml).find("graph_idx 99999999999 is not a graph number"),
+              std::string::npos);
+}
+
+TEST(BuildingMap, AnEmptyFileIsNoMap) {
+    EXPECT_NE(error_of("").find("site.building.yaml:1:1: error: a building map is a YAML map"),
+              std::string::npos);
+}
+
+TEST(BuildingMap, MoreThanMaxPlacesIsRefused) {
+    MapText m;
+    m.coordinate_system = "cartesian_meters";
+    for (int i = 0; i <= static_cast<int>(MAX_PLACES); ++i)
+        m.vertices.push_back({double(i % 100), double(i / 100), ""});
+    for (int i = 0; i + 1 < static_cast<int>(m.vertices.size()); i += 2)
+        m.lanes.push_back({i, i + 1, true});
+    m.lanes.push_back({static_cast<int>(MAX_PLACES) - 1, static_cast<int>(MAX_PLACES), true});
+    EXPECT_NE(error_of(m.yaml()).find("10001 places, more than the 10000 a floor may have"),
+              std::string::npos);
+}
+
+} // namespace
+} // namespace envdesign::floor

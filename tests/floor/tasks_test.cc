@@ -121,3 +121,34 @@ TEST(Tasks, NoNamedPlaceMeansNoDefaultTasks) {
 
 } // namespace
 } // namespace envdesign::floor
+
+namespace envdesign::floor {
+namespace {
+
+TEST(Tasks, ASpreadsheetsByteOrderMarkIsNoFault) {
+    auto tasks = parse_tasks_csv("\xEF\xBB\xBF"
+                                 "from,to,weight\ndock,pack,1\n",
+                                 "t.csv", site());
+    ASSERT_EQ(tasks.size(), 1u);
+    EXPECT_EQ(tasks[0].name(), "v0-v3");
+}
+
+TEST(Tasks, MoreDefaultPairsThanMaxTasksAreRefused) {
+    MapText m;
+    m.coordinate_system = "cartesian_meters";
+    for (int i = 0; i < 101; ++i) // 101 x 100 = 10100 ordered pairs
+        m.vertices.push_back({double(i), 0, "p" + std::to_string(i)});
+    for (int i = 0; i + 1 < 101; ++i)
+        m.lanes.push_back({i, i + 1, true});
+    Floor f = parse_building_map(m.yaml(), "t", {});
+    try {
+        default_tasks(f);
+        FAIL() << "no error";
+    } catch (const FloorError &e) {
+        EXPECT_NE(std::string(e.what()).find("make 10100 tasks, more than 10000"),
+                  std::string::npos);
+    }
+}
+
+} // namespace
+} // namespace envdesign::floor
