@@ -16,7 +16,11 @@ namespace {
 
 void add_import_flags(CLI::App &import, FloorFlags &f) {
     floor::ImportOptions &o = f.options;
-    import.add_option("map", o.map, "Open-RMF building map (*.building.yaml)")->required();
+    import
+        .add_option("map", o.map,
+                    "Open-RMF building map (*.building.yaml) or Nav2 route graph "
+                    "(*.geojson)")
+        ->required();
     import.add_option("-o,--output", o.out_dir, "folder to write the design problem into")
         ->required();
     import.add_option("--level", f.level, "the level to read (default: the only one)");
@@ -25,6 +29,9 @@ void add_import_flags(CLI::App &import, FloorFlags &f) {
     import.add_option("--tasks", o.tasks_csv,
                       "CSV from,to,weight (default: every ordered "
                       "pair of named places)");
+    import.add_option("--map", o.occupancy_yaml,
+                      "with a route graph: map_server's map.yaml, "
+                      "whose occupied cells block sight lines");
     import.add_option("--zones", o.zones_json, "VDA 5050 zoneSet JSON of candidate zones");
     import.add_option("--sight", o.sight_m, "metres people see a straight move across")
         ->capture_default_str();

@@ -1,6 +1,7 @@
 #pragma once
-// `envdesign floor import MAP -o DIR [...]`: an Open-RMF building map -> a design problem in
-// DIR (design.textproto, domain.pddl, tasks/, floor.json), by FLOORS.md; docs/floors.md.
+// `envdesign floor import MAP -o DIR [...]`: an Open-RMF building map, or a Nav2 route graph
+// (*.geojson, --map map.yaml) -> a design problem in DIR (design.textproto, domain.pddl,
+// tasks/, floor.json), by FLOORS.md; docs/floors.md.
 // Exit 0 written, 2 bad input (FILE:LINE:COL for a fault in a file), 1 DIR not writable.
 
 #include "floor/floor_import.h"

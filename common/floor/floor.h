@@ -7,7 +7,10 @@
 //   FloorGraph graph = build_floor_graph(floor, /*sight_m=*/10);
 
 #include "geometry.h"
+#include "occupancy_map.h"
 
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,6 +51,11 @@ struct Floor {
     std::vector<Edge> lanes;        // robot edges: sorted, no duplicates, no self-loops
     std::vector<Segment> walls_raw; // map coordinates, as Place::raw
     std::vector<Segment> walls;     // metres, y up
+    // Robot edges whose length the map gives (a Nav2 edge's cost), decimetres; the others
+    // are as long as their segment.
+    std::map<Edge, long long> given_length_dm;
+    // Occupied cells that block sight lines as walls do (Nav2, --map); none for RMF maps.
+    std::shared_ptr<const OccupancyGrid> occupancy;
 };
 
 // "v<vertex>".

@@ -77,8 +77,9 @@ bool blocked(const Segment &raw, const std::vector<int> &near,
 } // namespace
 
 std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vector<Segment> &walls,
-                              const std::vector<Segment> &walls_raw, double sight_m) {
-    WallGrid grid(walls, cell_size(walls, sight_m));
+                              const std::vector<Segment> &walls_raw, double sight_m,
+                              const OccupancyGrid *grid) {
+    WallGrid walls_near(walls, cell_size(walls, sight_m));
     std::vector<std::size_t> by_x(places.size());
     for (std::size_t i = 0; i < by_x.size(); ++i)
         by_x[i] = i;
@@ -93,7 +94,9 @@ std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vecto
                 break;
             if (distance(p.at, q.at) > sight_m)
                 continue;
-            if (blocked({p.raw, q.raw}, grid.near({p.at, q.at}), walls_raw))
+            if (blocked({p.raw, q.raw}, walls_near.near({p.at, q.at}), walls_raw))
+                continue;
+            if (grid && grid->blocks({p.at, q.at}))
                 continue;
             lines.push_back({std::min(p.vertex, q.vertex), std::max(p.vertex, q.vertex)});
         }
@@ -109,7 +112,8 @@ FloorGraph build_floor_graph(const Floor &floor, double sight_m) {
         graph.index[floor.places[i].vertex] = i;
     std::set<Edge> robot(floor.lanes.begin(), floor.lanes.end());
     std::set<Edge> human_only;
-    for (const Edge &e : sight_lines(floor.places, floor.walls, floor.walls_raw, sight_m))
+    for (const Edge &e :
+         sight_lines(floor.places, floor.walls, floor.walls_raw, sight_m, floor.occupancy.get()))
         for (const Edge &d : {e, Edge{e.to, e.from}})
             if (!robot.count(d))
                 human_only.insert(d);
@@ -119,6 +123,13 @@ FloorGraph build_floor_graph(const Floor &floor, double sight_m) {
 
 long long length_dm(const Place &a, const Place &b) {
     return std::max(1LL, std::llround(distance(a.at, b.at) * 10));
+}
+
+long long edge_length_dm(const Floor &floor, const FloorGraph &graph, const Edge &e) {
+    auto given = floor.given_length_dm.find(e);
+    if (given != floor.given_length_dm.end())
+        return given->second;
+    return length_dm(floor.places[graph.index.at(e.from)], floor.places[graph.index.at(e.to)]);
 }
 
 std::map<int, bool> robot_reachable(const FloorGraph &graph, int from) {

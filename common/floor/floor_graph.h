@@ -26,13 +26,19 @@ FloorGraph build_floor_graph(const Floor &floor, double sight_m);
 // |ab| in decimetres, rounded to the nearest integer (halves away from zero), at least 1.
 long long length_dm(const Place &a, const Place &b);
 
+// The length of edge e in the models: Floor::given_length_dm where the map gives it, else
+// length_dm of its places.
+long long edge_length_dm(const Floor &floor, const FloorGraph &graph, const Edge &e);
+
 // Which places the robot can reach from the place `from` along its edges (vertex number ->
 // reachable).
 std::map<int, bool> robot_reachable(const FloorGraph &graph, int from);
 
 // The sight lines among `places` (unordered pairs, vertex numbers, first < second) no wall
-// of `walls_raw` blocks; walls are looked up in a grid so that a large floor stays fast.
+// of `walls_raw` and no occupied cell of `grid` (if any) blocks; walls are looked up in a
+// grid of cells so that a large floor stays fast.
 std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vector<Segment> &walls,
-                              const std::vector<Segment> &walls_raw, double sight_m);
+                              const std::vector<Segment> &walls_raw, double sight_m,
+                              const OccupancyGrid *grid = nullptr);
 
 } // namespace envdesign::floor

@@ -2,6 +2,7 @@
 
 #include "floor_error.h"
 #include "floor_json.h"
+#include "route_graph.h"
 #include "spec_text.h"
 #include "zones.h"
 
@@ -44,12 +45,27 @@ void write_file(const fs::path &path, const std::string &text) {
         throw std::runtime_error("cannot write " + path.string());
 }
 
+Floor read_floor(const ImportOptions &o) {
+    if (!is_route_graph_path(o.map)) {
+        if (o.occupancy_yaml)
+            throw FloorError("--map (an occupancy map) goes with a Nav2 route graph; a building "
+                             "map's own walls block sight lines");
+        return read_building_map(o.map, o.map_options);
+    }
+    if (o.map_options.level || o.map_options.graph != 0)
+        throw FloorError("--level and --graph are for building maps, not route graphs");
+    Floor floor = read_route_graph(o.map);
+    if (o.occupancy_yaml)
+        floor.occupancy = std::make_shared<OccupancyGrid>(read_occupancy_map(*o.occupancy_yaml));
+    return floor;
+}
+
 } // namespace
 
 FloorProblem build_floor_problem(const ImportOptions &options, std::vector<std::string> &warnings) {
     check_options(options);
     FloorProblem p;
-    p.floor = read_building_map(options.map, options.map_options);
+    p.floor = read_floor(options);
     p.sight_m = options.sight_m;
     p.graph = build_floor_graph(p.floor, options.sight_m);
     std::vector<FloorTask> tasks =

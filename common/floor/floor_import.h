@@ -1,6 +1,7 @@
 #pragma once
-// `envdesign floor import`: an Open-RMF building map -> a design problem in a folder, by
-// FLOORS.md. The one entry point of the layer for the CLI.
+// `envdesign floor import`: an Open-RMF building map, or a Nav2 route graph (*.geojson) with
+// an optional occupancy map, -> a design problem in a folder, by FLOORS.md. The one entry
+// point of the layer for the CLI.
 //
 //   ImportOptions options;
 //   options.map = "warehouse.building.yaml";
@@ -26,6 +27,7 @@ struct ImportOptions {
     BuildingMapOptions map_options;
     std::optional<std::string> tasks_csv;
     std::optional<std::string> zones_json;
+    std::optional<std::string> occupancy_yaml; // Nav2: map_server's map.yaml (--map)
     double sight_m = 10;
     CandidateOptions candidates;
     Weights weights;

@@ -51,7 +51,7 @@ void write_init(std::ostringstream &out, const FloorProblem &p, const FloorTask 
     // robot's model, and its length must be there).
     for (const Edge &e : model_edges(p, true))
         out << "    (= (length " << object_name(e.from) << " " << object_name(e.to) << ") "
-            << length_dm(place_of(p, e.from), place_of(p, e.to)) << ")\n";
+            << edge_length_dm(p.floor, p.graph, e) << ")\n";
     out << "  )\n";
 }
 
