@@ -144,5 +144,58 @@ TEST(FloorCli, UnreachableTasksAreDroppedWithAWarning) {
     EXPECT_NE(out.find("1 tasks"), std::string::npos);
 }
 
+// A Nav2 route graph: a (0.5, 2.5) -> v1 (0.5, 4.5) -> v2 (4.5, 4.5) -> b (4.5, 2.5), and an
+// occupancy map of 1 m cells with an occupied column (x 2..3, y 1..3) between a and b.
+const char *ROUTE = R"({"type": "FeatureCollection", "features": [
+ {"type": "Feature", "geometry": {"type": "Point", "coordinates": [0.5, 2.5]}, "properties": {"id": 0, "name": "a"}},
+ {"type": "Feature", "geometry": {"type": "Point", "coordinates": [0.5, 4.5]}, "properties": {"id": 1}},
+ {"type": "Feature", "geometry": {"type": "Point", "coordinates": [4.5, 4.5]}, "properties": {"id": 2}},
+ {"type": "Feature", "geometry": {"type": "Point", "coordinates": [4.5, 2.5]}, "properties": {"id": 3, "name": "b"}},
+ {"type": "Feature", "geometry": {"type": "MultiLineString"}, "properties": {"id": 4, "startid": 0, "endid": 1}},
+ {"type": "Feature", "geometry": {"type": "MultiLineString"}, "properties": {"id": 5, "startid": 1, "endid": 2, "cost": 4}},
+ {"type": "Feature", "geometry": {"type": "MultiLineString"}, "properties": {"id": 6, "startid": 2, "endid": 3}},
+ {"type": "Feature", "geometry": {"type": "MultiLineString"}, "properties": {"id": 7, "startid": 3, "endid": 0}}
+]})";
+
+TEST(FloorCli, ARouteGraphWithAnOccupancyMapImportsAndDesigns) {
+    fs::path dir = testing::scratch_dir("nav2");
+    std::string route = testing::write_text(dir / "route.geojson", ROUTE);
+    std::string pgm = "P2\n6 6\n255\n";
+    for (int top = 0; top < 6; ++top)
+        for (int col = 0; col < 6; ++col) {
+            int y = 5 - top;
+            pgm +=
+                std::string(col == 2 && y >= 1 && y <= 2 ? "0" : "254") + (col == 5 ? "\n" : " ");
+        }
+    testing::write_text(dir / "map.pgm", pgm);
+    std::string map = testing::write_text(dir / "map.yaml", "image: map.pgm\nresolution: 1\n"
+                                                            "origin: [0, 0, 0]\nnegate: 0\n"
+                                                            "occupied_thresh: 0.65\n");
+    auto r =
+        run_envdesign("floor import " + route + " --map " + map + " -o " + (dir / "out").string());
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    // a -> b goes round (2 + 4 + 2 m, the middle edge's cost 4); b -> a is a lane. People
+    // see a-v2 and v1-b past the column but not a-b through it; they see v1 -> a, v2 -> v1,
+    // b -> v2 against the one-way edges.
+    EXPECT_NE(r.out.find("4 places, 4 robot edges, 7 human-only edges, 2 tasks"), std::string::npos)
+        << r.out;
+    std::string human = testing::read_text(dir / "out/tasks/v0-v3-human.pddl");
+    EXPECT_EQ(human.find("(connected v0 v3)"), std::string::npos);
+    EXPECT_NE(human.find("(= (length v1 v2) 40)"), std::string::npos);
+    auto result = design_json((dir / "out/design.textproto").string());
+    EXPECT_EQ(result["status"], "optimal");
+    r = run_envdesign("floor import " + route + " -o " + (dir / "open").string());
+    EXPECT_NE(r.out.find("4 places, 4 robot edges, 8 human-only edges"), std::string::npos)
+        << r.out;
+}
+
+TEST(FloorCli, AnOccupancyMapGoesOnlyWithARouteGraph) {
+    fs::path dir = testing::scratch_dir("map-flag");
+    std::string out =
+        run_import("map-with-rmf", l_shape().yaml(), "--map " + (dir / "m.yaml").string(), 2);
+    EXPECT_NE(out.find("--map (an occupancy map) goes with a Nav2 route graph"), std::string::npos)
+        << out;
+}
+
 } // namespace
 } // namespace envdesign::floor
