@@ -55,6 +55,27 @@ void add_import_flags(CLI::App &import, FloorFlags &f) {
     import.add_flag("--json", f.json, "print the summary as JSON");
 }
 
+void add_export_flags(CLI::App &exp, FloorFlags &f) {
+    exp.add_option("dir", f.export_options.dir, "a folder `floor import` wrote")->required();
+    exp.add_option("--design", f.design, "the chosen candidates, NAME,NAME,...")
+        ->delimiter(',')
+        ->required();
+    exp.add_option("-o,--output", f.export_options.out_dir, "folder to write into")->required();
+}
+
+int run_export(FloorFlags &flags) {
+    flags.export_options.design = flags.design;
+    floor::ExportReport report;
+    try {
+        report = floor::export_design(flags.export_options);
+    } catch (const floor::FloorError &e) {
+        throw CommandError(2, e.what());
+    }
+    for (const auto &file : report.written)
+        std::cout << "wrote " << file << "\n";
+    return 0;
+}
+
 bool chosen(const std::vector<std::string> &kinds, const std::string &kind) {
     return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
 }
@@ -86,9 +107,14 @@ void add_floor_flags(CLI::App &command, FloorFlags &flags) {
         "import", "an Open-RMF building map -> a design problem (design.textproto, PDDL, "
                   "floor.json)");
     add_import_flags(*flags.import, flags);
+    flags.export_ = command.add_subcommand(
+        "export", "a design back to the site: the map with its new lanes, GeoJSON, keepout mask");
+    add_export_flags(*flags.export_, flags);
 }
 
 int run_floor(FloorFlags &flags) {
+    if (*flags.export_)
+        return run_export(flags);
     floor::ImportOptions &o = flags.options;
     if (!flags.level.empty())
         o.map_options.level = flags.level;

@@ -2,8 +2,11 @@
 // `envdesign floor import MAP -o DIR [...]`: an Open-RMF building map, or a Nav2 route graph
 // (*.geojson, --map map.yaml) -> a design problem in DIR (design.textproto, domain.pddl,
 // tasks/, floor.json), by FLOORS.md; docs/floors.md.
-// Exit 0 written, 2 bad input (FILE:LINE:COL for a fault in a file), 1 DIR not writable.
+// `envdesign floor export DIR --design NAME,... -o OUT`: the design back in the site's
+// formats (a map copy with the new lanes, GeoJSON of every chosen candidate, a keepout mask).
+// Exit 0 written, 2 bad input (FILE:LINE:COL for a fault in a file), 1 a folder not writable.
 
+#include "floor/floor_export.h"
 #include "floor/floor_import.h"
 
 #include <CLI/CLI.hpp>
@@ -19,6 +22,9 @@ struct FloorFlags {
     std::string level;
     std::vector<std::string> candidates{"tape", "lane", "zones"};
     bool json = false;
+    CLI::App *export_ = nullptr; // the `export` subcommand
+    floor::ExportOptions export_options;
+    std::vector<std::string> design;
 };
 
 void add_floor_flags(CLI::App &command, FloorFlags &flags);

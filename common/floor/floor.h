@@ -56,6 +56,8 @@ struct Floor {
     std::map<Edge, long long> given_length_dm;
     // Occupied cells that block sight lines as walls do (Nav2, --map); none for RMF maps.
     std::shared_ptr<const OccupancyGrid> occupancy;
+    std::string occupancy_source; // its map.yaml, if any
+    bool route_graph = false;     // read from a Nav2 route graph, not a building map
 };
 
 // "v<vertex>".

@@ -55,8 +55,10 @@ Floor read_floor(const ImportOptions &o) {
     if (o.map_options.level || o.map_options.graph != 0)
         throw FloorError("--level and --graph are for building maps, not route graphs");
     Floor floor = read_route_graph(o.map);
-    if (o.occupancy_yaml)
+    if (o.occupancy_yaml) {
         floor.occupancy = std::make_shared<OccupancyGrid>(read_occupancy_map(*o.occupancy_yaml));
+        floor.occupancy_source = *o.occupancy_yaml;
+    }
     return floor;
 }
 

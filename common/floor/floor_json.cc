@@ -1,5 +1,7 @@
 #include "floor_json.h"
 
+#include <filesystem>
+
 namespace envdesign::floor {
 
 namespace {
@@ -49,8 +51,14 @@ json candidate(const FloorProblem &p, const Candidate &c) {
     json segments = json::array();
     for (const Edge &pair : c.pairs)
         segments.push_back({point(place_of(p, pair.from).at), point(place_of(p, pair.to).at)});
-    json out = {
-        {"name", c.name}, {"kind", kind_name(c.kind)}, {"cost", c.cost}, {"segments", segments}};
+    json edges = json::array();
+    for (const InitEdit &e : c.edits)
+        edges.push_back({object_name(e.edge.from), object_name(e.edge.to)});
+    json out = {{"name", c.name},
+                {"kind", kind_name(c.kind)},
+                {"cost", c.cost},
+                {"segments", segments},
+                {"edges", edges}};
     if (c.kind == CandidateKind::ZONE) {
         out["zone_type"] = c.zone_type;
         json polygon = json::array();
@@ -58,6 +66,19 @@ json candidate(const FloorProblem &p, const Candidate &c) {
             polygon.push_back(point(q));
         out["polygon"] = polygon;
     }
+    return out;
+}
+
+json source(const FloorProblem &p) {
+    std::error_code ec;
+    std::filesystem::path map = std::filesystem::absolute(p.floor.source, ec);
+    json out = {{"map", ec ? p.floor.source : map.string()},
+                {"format", p.floor.route_graph ? "route_graph" : "building_map"},
+                {"level", p.floor.level},
+                {"graph", p.floor.graph},
+                {"metres_per_unit", p.floor.scale}};
+    if (!p.floor.occupancy_source.empty())
+        out["occupancy_map"] = std::filesystem::absolute(p.floor.occupancy_source, ec).string();
     return out;
 }
 
@@ -72,11 +93,7 @@ json floor_json(const FloorProblem &p) {
         candidates.push_back(candidate(p, c));
     return {{"format", "envdesign-floor"},
             {"version", 1},
-            {"source",
-             {{"map", p.floor.source},
-              {"level", p.floor.level},
-              {"graph", p.floor.graph},
-              {"metres_per_unit", p.floor.scale}}},
+            {"source", source(p)},
             {"sight_m", p.sight_m},
             {"places", places(p)},
             {"robot_edges", edges(p.graph.robot)},

@@ -126,6 +126,7 @@ Floor to_floor(const Graph &g, const std::string &path) {
     Floor floor;
     floor.source = path;
     floor.level = "route graph";
+    floor.route_graph = true;
     std::set<int> used;
     for (const auto &[e, cost] : g.edges) {
         floor.lanes.push_back(e);
