@@ -157,7 +157,7 @@ void check_graph(const YamlFields &yaml, const YAML::Node &level, const std::vec
 } // namespace
 
 Floor read_building_map(const std::string &path, const BuildingMapOptions &options) {
-    return parse_building_map(pddl::read_input_file(path), path, options);
+    return parse_building_map(pddl::read_input_file(path, MAX_MAP_FILE_BYTES), path, options);
 }
 
 namespace {

@@ -22,6 +22,14 @@ inline constexpr std::size_t MAX_PLACES = 10000;
 inline constexpr std::size_t MAX_WALLS = 100000;
 inline constexpr std::size_t MAX_TASKS = 10000;
 inline constexpr double MAX_COORDINATE_M = 1e6; // |x|, |y| in metres
+// Map, route graph and zone files: yaml-cpp holds about 100 bytes of memory a byte of YAML,
+// so 8 MiB is about 1 GB at most (the largest rmf_demos map is 0.5 MB).
+inline constexpr std::size_t MAX_MAP_FILE_BYTES = 8u << 20;
+// Sight lines (unordered pairs) a floor may have: dense places and a long --sight make
+// O(places^2) of them, each a line of every task's problems.
+inline constexpr std::size_t MAX_SIGHT_LINES = 500000;
+// Tasks x edges of both models: the lines the problem files would hold.
+inline constexpr std::size_t MAX_TASK_EDGES = 4000000;
 
 struct Place {
     int vertex = 0;   // the vertex number in the map; the PDDL object is "v<vertex>"

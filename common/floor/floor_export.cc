@@ -1,5 +1,6 @@
 #include "floor_export.h"
 
+#include "floor.h"
 #include "floor_error.h"
 #include "geometry.h"
 #include "json_file.h"
@@ -98,7 +99,7 @@ std::vector<NewLane> new_lanes(const std::vector<json> &design) {
 std::string building_map_copy(const std::string &path, const json &source,
                               const std::vector<NewLane> &lanes) {
     YamlFields yaml(path);
-    YAML::Node root = yaml.load(pddl::read_input_file(path));
+    YAML::Node root = yaml.load(pddl::read_input_file(path, MAX_MAP_FILE_BYTES));
     YAML::Node level = root["levels"][source["level"].get<std::string>()];
     if (!level.IsMap())
         throw FloorError(path + " has no level '" + source["level"].get<std::string>() + "'");
@@ -124,7 +125,7 @@ std::string building_map_copy(const std::string &path, const json &source,
 
 std::string route_graph_copy(const std::string &path, const json &floor,
                              const std::vector<NewLane> &lanes) {
-    JsonFile file(pddl::read_input_file(path), path);
+    JsonFile file(pddl::read_input_file(path, MAX_MAP_FILE_BYTES), path);
     json graph = file.doc();
     long long next = 0;
     for (const json &f : graph["features"])

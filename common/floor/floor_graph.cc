@@ -1,5 +1,7 @@
 #include "floor_graph.h"
 
+#include "floor_error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -99,6 +101,10 @@ std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vecto
             if (grid && grid->blocks({p.at, q.at}))
                 continue;
             lines.push_back({std::min(p.vertex, q.vertex), std::max(p.vertex, q.vertex)});
+            if (lines.size() > MAX_SIGHT_LINES)
+                throw FloorError("more than " + std::to_string(MAX_SIGHT_LINES) +
+                                 " sight lines: the places are too dense for the sight "
+                                 "distance (lower --sight)");
         }
     }
     std::sort(lines.begin(), lines.end());

@@ -79,6 +79,12 @@ FloorProblem build_floor_problem(const ImportOptions &options, std::vector<std::
     if (options.zones_json && options.candidates.zones)
         zones = read_zones(*options.zones_json, warnings);
     p.candidates = make_candidates(p.floor, p.graph, zones, options.candidates, warnings);
+    std::size_t edges = p.graph.robot.size() + p.graph.human_only.size();
+    if (p.tasks.size() * edges > MAX_TASK_EDGES)
+        throw FloorError(
+            std::to_string(p.tasks.size()) + " tasks x " + std::to_string(edges) +
+            " edges is more than " + std::to_string(MAX_TASK_EDGES) +
+            " lines of problem files: give fewer tasks (--tasks) or a shorter --sight");
     p.weights = options.weights;
     return p;
 }

@@ -35,6 +35,8 @@ JsonFile::JsonFile(const std::string &text, const std::string &path) : yaml_(pat
         throw pddl::ParseError(location_of(text, path, e.byte ? e.byte - 1 : 0),
                                "malformed JSON: " + why);
     }
+    if (text.size() > MAX_MAP_FILE_BYTES) // marks would cost too much memory: no positions
+        return;
     try {
         marks_ = yaml_.load(text);
     } catch (const pddl::ParseError &) { // positions unknown; faults are still named

@@ -145,7 +145,7 @@ Floor to_floor(const Graph &g, const std::string &path) {
 } // namespace
 
 Floor read_route_graph(const std::string &path) {
-    return parse_route_graph(pddl::read_input_file(path), path);
+    return parse_route_graph(pddl::read_input_file(path, MAX_MAP_FILE_BYTES), path);
 }
 
 Floor parse_route_graph(const std::string &text, const std::string &path) {

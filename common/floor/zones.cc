@@ -1,5 +1,6 @@
 #include "zones.h"
 
+#include "floor.h"
 #include "json_file.h"
 
 #include "pddl/input_file.h"
@@ -59,7 +60,7 @@ Zone read_zone(const JsonFile &file, std::size_t i, const json &zone, std::strin
 } // namespace
 
 std::vector<Zone> read_zones(const std::string &path, std::vector<std::string> &warnings) {
-    return parse_zones(pddl::read_input_file(path), path, warnings);
+    return parse_zones(pddl::read_input_file(path, MAX_MAP_FILE_BYTES), path, warnings);
 }
 
 std::vector<Zone> parse_zones(const std::string &text, const std::string &path,

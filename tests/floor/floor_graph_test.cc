@@ -2,11 +2,14 @@
 // every sight line within --sight that no wall crosses; lengths in whole decimetres.
 
 #include "floor/building_map.h"
+#include "floor/floor_error.h"
 #include "floor/floor_graph.h"
 
 #include "map_text.h"
 
 #include <gtest/gtest.h>
+
+#include <chrono>
 
 namespace envdesign::floor {
 namespace {
@@ -123,6 +126,34 @@ TEST(FloorGraph, ManyPlacesAndWallsStayFastAndAgreeWithTheDirectTest) {
         }
     EXPECT_EQ(fast.size(), direct);
     EXPECT_GT(direct, 5000u);
+}
+
+} // namespace
+} // namespace envdesign::floor
+
+namespace envdesign::floor {
+namespace {
+
+// MAX_PLACES places 1 m apart: 10 m of sight makes millions of sight lines (refused, fast);
+// 1.5 m makes about 40,000, found in well under a second.
+TEST(FloorGraph, ADenseFloorAtThePlaceLimitIsRefusedOrFastNeverUnbounded) {
+    Floor f;
+    for (int i = 0; i < static_cast<int>(MAX_PLACES); ++i) {
+        Point p{double(i % 100), double(i / 100)};
+        f.places.push_back({i, "", p, p});
+    }
+    for (int c = 0; c < 99; ++c) {
+        Segment w{{c + 0.5, 10.2}, {c + 0.5, 20.2}};
+        f.walls.push_back(w);
+        f.walls_raw.push_back(w);
+    }
+    auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(build_floor_graph(f, 10), FloorError);
+    std::vector<Edge> lines = sight_lines(f.places, f.walls, f.walls_raw, 1.5);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_GT(lines.size(), 35000u);
+    EXPECT_LT(seconds, 10.0);
 }
 
 } // namespace
