@@ -189,6 +189,25 @@ TEST(FloorCli, ARouteGraphWithAnOccupancyMapImportsAndDesigns) {
         << r.out;
 }
 
+TEST(FloorCli, CandidatesChooseTheKindsAndJsonSummarises) {
+    fs::path dir = testing::scratch_dir("kinds");
+    std::string map = testing::write_text(dir / "l.building.yaml", l_shape().yaml());
+    auto r = run_envdesign("floor import " + map + " -o " + (dir / "out").string() +
+                               " --candidates lane --json",
+                           false);
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    auto summary = nlohmann::json::parse(r.out);
+    EXPECT_EQ(summary["status"], "ok");
+    EXPECT_EQ(summary["candidates"], 1);
+    EXPECT_EQ(summary["tasks"], 2);
+    std::string spec = testing::read_text(dir / "out/design.textproto");
+    EXPECT_EQ(spec.find("tape-"), std::string::npos);
+    EXPECT_NE(spec.find("name: \"lane-v0-v2\""), std::string::npos);
+    r = run_envdesign("floor import " + map + " -o " + (dir / "x").string() +
+                      " --candidates paint");
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+}
+
 TEST(FloorCli, AnOccupancyMapGoesOnlyWithARouteGraph) {
     fs::path dir = testing::scratch_dir("map-flag");
     std::string out =
