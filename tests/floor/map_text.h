@@ -68,12 +68,24 @@ struct MapText {
     }
 };
 
+// The scratch folders of this process, removed when it ends.
+struct ScratchFolders {
+    std::vector<std::filesystem::path> made;
+    ~ScratchFolders() {
+        std::error_code ec;
+        for (const auto &dir : made)
+            std::filesystem::remove_all(dir, ec);
+    }
+};
+inline ScratchFolders scratch_folders;
+
 // A fresh folder under the system's temporary folder.
 inline std::filesystem::path scratch_dir(const std::string &name) {
     auto dir = std::filesystem::temp_directory_path() /
                ("envdesign-floor-" + name + "-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
+    scratch_folders.made.push_back(dir);
     return dir;
 }
 
