@@ -1,7 +1,15 @@
 #pragma once
 // `envdesign floor import`: an Open-RMF building map, or a Nav2 route graph (*.geojson) with
-// an optional occupancy map, -> a design problem in a folder, by FLOORS.md. The one entry
-// point of the layer for the CLI.
+// an optional occupancy map, -> a design problem in a folder, by FLOORS.md. The entry point
+// of the layer for the CLI (with floor_export.h, the way back). The layer, in order:
+//
+//   building_map.h, route_graph.h   a map -> Floor (places in metres, lanes, walls)
+//   occupancy_map.h                 map_server's map.yaml + PGM -> cells that block sight
+//   floor_graph.h                   Floor -> the two models (robot edges, human-only edges)
+//   tasks.h, zones.h                the tasks (CSV or default), the zone file
+//   candidates.h                    tape-vI-vJ, lane-vI-vJ, zones -> init edits
+//   spec_text.h, floor_json.h       the files: spec, domain, problems, floor.json
+//   geometry.h, yaml_fields.h, json_file.h   predicates; inputs with FILE:LINE:COL
 //
 //   ImportOptions options;
 //   options.map = "warehouse.building.yaml";
