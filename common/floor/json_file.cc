@@ -34,6 +34,12 @@ JsonFile::JsonFile(const std::string &text, const std::string &path) : yaml_(pat
         why = colon == std::string::npos ? why : why.substr(colon + 2);
         throw pddl::ParseError(location_of(text, path, e.byte ? e.byte - 1 : 0),
                                "malformed JSON: " + why);
+    } catch (const nlohmann::json::exception &e) { // a number too large for a double
+        std::string why = e.what();
+        std::size_t bracket = why.find("] ");
+        throw pddl::ParseError({path, 1, 1},
+                               "malformed JSON: " +
+                                   (bracket == std::string::npos ? why : why.substr(bracket + 2)));
     }
     if (text.size() > MAX_MAP_FILE_BYTES) // marks would cost too much memory: no positions
         return;

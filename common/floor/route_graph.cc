@@ -151,7 +151,12 @@ Floor read_route_graph(const std::string &path) {
 Floor parse_route_graph(const std::string &text, const std::string &path) {
     JsonFile file(text, path);
     check_crs(file);
-    Floor floor = to_floor(read_features(file), path);
+    Floor floor;
+    try {
+        floor = to_floor(read_features(file), path);
+    } catch (const nlohmann::json::exception &e) { // a value of an unexpected type deep inside
+        file.fail({}, std::string("not a route graph: ") + e.what());
+    }
     if (floor.places.size() > MAX_PLACES)
         file.fail({"features"}, std::to_string(floor.places.size()) + " places, more than the " +
                                     std::to_string(MAX_PLACES) + " a floor may have");

@@ -208,6 +208,35 @@ TEST(FloorCli, CandidatesChooseTheKindsAndJsonSummarises) {
     EXPECT_EQ(r.exit_code, 2) << r.out;
 }
 
+// The example warehouse drawn twice, as a building map (pixels, walls) and as a Nav2 site
+// (metres, an occupancy map): the same places, models, candidates and design.
+TEST(FloorCli, TheExampleWarehouseGivesOneDesignFromBothReaders) {
+    fs::path dir = testing::scratch_dir("examples");
+    std::string ex = std::string(ENVDESIGN_EXAMPLES) + "/floor/";
+    auto rmf = run_envdesign("floor import " + ex + "warehouse.building.yaml --zones " + ex +
+                             "zones.json -o " + (dir / "rmf").string());
+    auto nav2 = run_envdesign("floor import " + ex + "nav2/route.geojson --map " + ex +
+                              "nav2/map.yaml --zones " + ex + "nav2/zones.json -o " +
+                              (dir / "nav2").string());
+    ASSERT_EQ(rmf.exit_code, 0) << rmf.out;
+    ASSERT_EQ(nav2.exit_code, 0) << nav2.out;
+    const std::string counts = "9 places, 18 robot edges, 4 human-only edges, 20 tasks, 8 "
+                               "candidates";
+    EXPECT_NE(rmf.out.find(counts), std::string::npos) << rmf.out;
+    EXPECT_NE(nav2.out.find(counts), std::string::npos) << nav2.out;
+    auto body = [](const fs::path &spec) { // without the opening comment naming the map
+        std::string text = testing::read_text(spec);
+        return text.substr(text.find("robot_domain"));
+    };
+    EXPECT_EQ(body(dir / "rmf/design.textproto"), body(dir / "nav2/design.textproto"));
+    auto a = design_json((dir / "rmf/design.textproto").string());
+    auto b = design_json((dir / "nav2/design.textproto").string());
+    EXPECT_EQ(a["design"], nlohmann::json::parse(R"(["gap-barrier", "top-aisle-marking"])"));
+    EXPECT_EQ(a["design"], b["design"]);
+    EXPECT_DOUBLE_EQ(a["objective"].get<double>(), 7.5);
+    EXPECT_DOUBLE_EQ(b["objective"].get<double>(), 7.5);
+}
+
 TEST(FloorCli, AnOccupancyMapGoesOnlyWithARouteGraph) {
     fs::path dir = testing::scratch_dir("map-flag");
     std::string out =
