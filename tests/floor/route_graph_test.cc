@@ -93,6 +93,16 @@ TEST(RouteGraph, FaultsAreAtTheirLine) {
     EXPECT_NE(error_of(huge).find("x is not a finite number within 1e6"), std::string::npos);
     EXPECT_NE(error_of(graph({node(0, 0, 0)})).find("no edge between two nodes"),
               std::string::npos);
+    // Found by mutating the example: a number beyond a double, coordinates that are no list.
+    EXPECT_NE(error_of("{\"features\": [1e400]}")
+                  .find("route.geojson:1:1: error: malformed "
+                        "JSON: number overflow"),
+              std::string::npos)
+        << error_of("{\"features\": [1e400]}");
+    std::string flat =
+        R"({"features": [{"type": "Feature", "geometry": {"type": "Point", "coordinates": 5}, "properties": {"id": 1}}]})";
+    EXPECT_NE(error_of(flat).find("error: node 1 has no coordinates [x, y]"), std::string::npos)
+        << error_of(flat);
 }
 
 TEST(Pgm, BinaryAndPlainAreReadAndScaledTo255) {
