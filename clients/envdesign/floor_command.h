@@ -4,6 +4,8 @@
 // tasks/, floor.json), by FLOORS.md; docs/floors.md.
 // `envdesign floor export DIR --design NAME,... -o OUT`: the design back in the site's
 // formats (a map copy with the new lanes, GeoJSON of every chosen candidate, a keepout mask).
+// `envdesign floor draw DIR [--design NAME,...] -o FILE.svg`: the floor as a picture (walls,
+// lanes, sight lines, places, and the chosen candidates).
 // Exit 0 written, 2 bad input (FILE:LINE:COL for a fault in a file), 1 a folder not writable.
 
 #include "floor/floor_export.h"
@@ -25,6 +27,10 @@ struct FloorFlags {
     CLI::App *export_ = nullptr; // the `export` subcommand
     floor::ExportOptions export_options;
     std::vector<std::string> design;
+    CLI::App *draw = nullptr; // the `draw` subcommand: floor.json (and a design) as SVG
+    std::string draw_dir;
+    std::string draw_out;
+    std::vector<std::string> draw_design;
 };
 
 void add_floor_flags(CLI::App &command, FloorFlags &flags);

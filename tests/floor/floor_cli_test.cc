@@ -237,6 +237,36 @@ TEST(FloorCli, TheExampleWarehouseGivesOneDesignFromBothReaders) {
     EXPECT_DOUBLE_EQ(b["objective"].get<double>(), 7.5);
 }
 
+TEST(FloorCli, DrawPaintsTheFloorAndTheChosenCandidates) {
+    fs::path dir = testing::scratch_dir("draw");
+    std::string ex = std::string(ENVDESIGN_EXAMPLES) + "/floor/";
+    ASSERT_EQ(run_envdesign("floor import " + ex + "warehouse.building.yaml --zones " + ex +
+                            "zones.json -o " + (dir / "in").string())
+                  .exit_code,
+              0);
+    auto r = run_envdesign("floor draw " + (dir / "in").string() +
+                           " --design gap-barrier,tape-v22-v24 -o " + (dir / "f.svg").string());
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    std::string svg = testing::read_text(dir / "f.svg");
+    EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+    EXPECT_NE(svg.find("<polygon class=\"zone\""), std::string::npos);
+    EXPECT_NE(svg.find("class=\"tape\""), std::string::npos);
+    EXPECT_EQ(svg.find("class=\"lane\""), std::string::npos); // not chosen
+    EXPECT_NE(svg.find(">v19 pick_a</text>"), std::string::npos);
+    auto count = [&](const std::string &what) {
+        std::size_t n = 0;
+        for (std::size_t at = svg.find(what); at != std::string::npos; at = svg.find(what, at + 1))
+            ++n;
+        return n;
+    };
+    EXPECT_EQ(count("<circle"), 9u);          // the places
+    EXPECT_EQ(count("stroke=\"#222\""), 16u); // the walls: outer 4, racks 4 + 4 + 4
+    r = run_envdesign("floor draw " + (dir / "in").string() + " --design nope -o " +
+                      (dir / "g.svg").string());
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+}
+
 TEST(FloorCli, AnOccupancyMapGoesOnlyWithARouteGraph) {
     fs::path dir = testing::scratch_dir("map-flag");
     std::string out =
