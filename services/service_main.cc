@@ -6,10 +6,14 @@
 #include "bus/lcm_url.h"
 #include "bus/log.h"
 
+#include <lcm/lcm-cpp.hpp>
+
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <csignal>
 #include <iostream>
+#include <map>
 #include <set>
 
 namespace envdesign::services {
@@ -39,14 +43,21 @@ std::set<std::string> named_flags(const std::vector<std::string> &args) {
     return names;
 }
 
+// Where a setting of the config file is: "FILE:LINE:COL", by flag name.
+using SettingPlaces = std::map<std::string, std::string>;
+
 // The settings of the config file as "--key=value" arguments, those the command line does
-// not override; throws service::ConfigError for a key that names no flag of `app`.
+// not override; throws service::ConfigError for a key that names no flag of `app` (nor a
+// flag that is no setting: "version = true" made a service print its version and exit 0).
 std::vector<std::string> config_arguments(const CLI::App &app, const std::string &program,
                                           const std::string &path,
-                                          const std::set<std::string> &on_command_line) {
-    static const std::set<std::string> NOT_SETTINGS = {"config", "check-config", "help"};
+                                          const std::set<std::string> &on_command_line,
+                                          SettingPlaces &places) {
+    static const std::set<std::string> NOT_SETTINGS = {"config", "check-config", "help", "version"};
     std::vector<std::string> out;
     for (const envdesign::service::ConfigSetting &s : envdesign::service::read_config_file(path)) {
+        places["--" + s.key] =
+            path + ":" + std::to_string(s.line) + ":" + std::to_string(s.key_column);
         if (NOT_SETTINGS.count(s.key) || app.get_option_no_throw("--" + s.key) == nullptr)
             throw envdesign::service::ConfigError(path + ":" + std::to_string(s.line) + ":" +
                                                   std::to_string(s.key_column) +
@@ -56,6 +67,36 @@ std::vector<std::string> config_arguments(const CLI::App &app, const std::string
             out.push_back("--" + s.key + "=" + s.value);
     }
     return out;
+}
+
+// A flag's error names its place in the config file when the file set it.
+std::string placed(const std::string &message, const SettingPlaces &places) {
+    for (const auto &[flag, place] : places) {
+        auto at = message.find(flag);
+        if (at != std::string::npos &&
+            (at + flag.size() == message.size() ||
+             !std::isalnum(message[at + flag.size()]) && message[at + flag.size()] != '-'))
+            return place + ": error: " + message;
+    }
+    return message;
+}
+
+// What start-up would fail on beyond the flags' own checks: the LCM URL and the key file.
+std::optional<std::string> startup_problem(const CLI::App &app) {
+    std::string url = app.get_option("--lcm-url")->as<std::string>();
+    if (url.empty())
+        url = bus::default_url();
+    if (auto problem = bus::url_problem(url))
+        return "--lcm-url: " + *problem;
+    if (!lcm::LCM(url).good()) // an address or port it cannot use
+        return "--lcm-url: LCM cannot start on '" + url + "'";
+    try {
+        if (auto path = bus::key_file_path(app.get_option("--key-file")->as<std::string>()))
+            bus::load_key_file(*path);
+    } catch (const bus::KeyFileError &e) {
+        return std::string("--key-file: ") + e.what();
+    }
+    return std::nullopt;
 }
 
 } // namespace
@@ -85,6 +126,7 @@ Service open_service(const std::string &role, const CommonFlags &flags) {
     if (auto path = bus::key_file_path(flags.key_file))
         keys = std::make_shared<const bus::KeyRing>(bus::load_key_file(*path));
     s.bus = std::make_unique<bus::Bus>(url, s.log, keys);
+    s.keys = keys;
     s.log->info("request - | on {}", url);
     if (keys)
         s.log->info("request - | bus authenticated: signing with key '{}', {} key(s) accepted",
@@ -98,11 +140,12 @@ Service open_service(const std::string &role, const CommonFlags &flags) {
 std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
                                       const std::function<void()> &check) {
     std::vector<std::string> args(argv, argv + argc);
+    SettingPlaces places;
     try {
         if (auto path = config_path(args)) {
             std::string program = args[0].substr(args[0].rfind('/') + 1);
             std::vector<std::string> settings =
-                config_arguments(app, program, *path, named_flags(args));
+                config_arguments(app, program, *path, named_flags(args), places);
             args.insert(args.begin() + 1, settings.begin(), settings.end());
         }
     } catch (const envdesign::service::ConfigError &e) {
@@ -117,11 +160,21 @@ std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
         if (check)
             check();
     } catch (const CLI::ParseError &e) {
-        int code = app.exit(e);
-        return e.get_exit_code() == 0 ? code : 2;
+        if (e.get_exit_code() == 0) // --help
+            return app.exit(e);
+        if (places.empty())
+            app.exit(e); // CLI11's message
+        else
+            std::cerr << placed(e.what(), places) << std::endl;
+        return 2;
     }
     if (app.get_option("--check-config")->count() > 0) {
-        std::cout << args[0].substr(args[0].rfind('/') + 1) << ": configuration OK" << std::endl;
+        std::string program = args[0].substr(args[0].rfind('/') + 1);
+        if (auto problem = startup_problem(app)) {
+            std::cerr << program << ": " << *problem << std::endl;
+            return 2;
+        }
+        std::cout << program << ": configuration OK" << std::endl;
         return 0;
     }
     return std::nullopt;

@@ -32,6 +32,7 @@ struct Service {
     std::string instance;
     std::shared_ptr<spdlog::logger> log;
     std::unique_ptr<bus::Bus> bus;
+    std::shared_ptr<const bus::KeyRing> keys; // null on an unauthenticated bus
 };
 Service open_service(const std::string &role, const CommonFlags &flags);
 

@@ -11,6 +11,7 @@
 #include "replay.h"
 
 #include "pddl/parse_error.h"
+#include "service/number_flag.h"
 
 #include <CLI/CLI.hpp>
 #include <envdesign/version.h>
@@ -94,7 +95,7 @@ int main(int argc, char **argv) {
     replay->excludes(task);
     app.add_option("--count", f.count, "arrivals for --task")->check(CLI::NonNegativeNumber);
     app.add_option("--rate", f.rate, "arrivals per second (0: as fast as possible)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(service::number_in({0, 1e6}));
     app.add_option("--repeat", f.repeat, "replay the file this many times")
         ->check(CLI::PositiveNumber);
     app.add_option("--problem", f.problem_id, "design problem id (rows may override)");

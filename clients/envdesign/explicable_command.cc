@@ -3,6 +3,7 @@
 #include "design/explicability.h"
 #include "pddl/parser.h"
 #include "result_format.h"
+#include "service/number_flag.h"
 
 #include <iostream>
 
@@ -68,7 +69,7 @@ void add_explicable_flags(CLI::App &command, ExplicableFlags &flags) {
     command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
         ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
     command.add_option("--time-limit", flags.time_limit_s, "seconds (0: none)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(service::number_in(design::TIME_LIMIT_S));
     command.add_flag("--json", flags.json, "print a JSON result");
 }
 

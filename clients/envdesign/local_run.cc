@@ -3,6 +3,7 @@
 #include "cluster/result_message.h"
 #include "design/explanation.h"
 #include "heuristics/heuristic.h"
+#include "service/number_flag.h"
 
 #include <algorithm>
 
@@ -12,7 +13,7 @@ void add_engine_flags(CLI::App &command, int &workers, double &time_limit_s,
                       std::string &heuristic) {
     command.add_option("--workers", workers, "planner threads")->check(CLI::Range(1, 256));
     command.add_option("--time-limit", time_limit_s, "seconds (0: none; default: the spec's)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(service::number_in(design::TIME_LIMIT_S));
     command.add_option("--heuristic", heuristic, "lmcut | hmax | blind")
         ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
 }

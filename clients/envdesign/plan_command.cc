@@ -5,6 +5,7 @@
 #include "pddl/parse_error.h"
 #include "planning/planner.h"
 #include "result_format.h"
+#include "service/number_flag.h"
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -82,7 +83,7 @@ void add_plan_flags(CLI::App &command, PlanFlags &flags) {
     command.add_option("--heuristic", flags.heuristic, "lmcut | hmax | blind")
         ->check(CLI::IsMember({"lmcut", "hmax", "blind"}));
     command.add_option("--time-limit", flags.time_limit_s, "seconds (0: none)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(service::number_in(design::TIME_LIMIT_S));
     command.add_option("--memory-limit", flags.memory_limit_mb, "MiB (0: none)")
         ->check(CLI::NonNegativeNumber);
     command.add_option("--plan-file", flags.plan_file, "also write the plan to this file");

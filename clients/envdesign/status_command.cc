@@ -3,6 +3,7 @@
 #include "cli_error.h"
 
 #include "envdesign/client/client.h"
+#include "service/number_flag.h"
 
 #include <iostream>
 
@@ -15,7 +16,7 @@ void add_status_flags(CLI::App &command, StatusFlags &flags) {
     command.add_option("--key-file", flags.key_file,
                        "bus keys (default: $ENVDESIGN_KEY_FILE; deploy/LAN.md)");
     command.add_option("--seconds", flags.seconds, "how long to listen")
-        ->check(CLI::Range(0.1, 3600.0))
+        ->check(service::number_in({0.1, 3600.0}))
         ->capture_default_str();
     command.add_flag("--json", flags.json, "JSON lines, one object a service");
 }

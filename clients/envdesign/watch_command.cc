@@ -1,6 +1,7 @@
 #include "watch_command.h"
 
 #include "cli_error.h"
+#include "service/number_flag.h"
 
 #include <envdesign/client/client.h>
 
@@ -24,7 +25,7 @@ void add_watch_flags(CLI::App &command, WatchFlags &flags) {
     command.add_option("--key-file", flags.key_file,
                        "bus keys (default: $ENVDESIGN_KEY_FILE; deploy/LAN.md)");
     command.add_option("--seconds", flags.seconds, "stop after S seconds (0: at Ctrl-C)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(service::number_in(design::TIME_LIMIT_S))
         ->capture_default_str();
     command.add_flag("--json", flags.json, "JSON lines, one object a message");
     command.add_flag("--status", flags.status, "also the services' status (once a second each)");

@@ -1,5 +1,6 @@
 #include "arrivals/tracker.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace envdesign::arrivals {
@@ -70,7 +71,7 @@ Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_
     if (out.verdict != Verdict::ACCEPTED)
         return out;
     Problem &p = it->second;
-    out.use = classify(p, arrival, out.first_of_name);
+    out.use = classify(p, arrival, now, out.first_of_name);
     if (out.use == Use::UNKNOWN_TASK)
         return out;
     p.estimator.add(arrival.task);
@@ -84,11 +85,27 @@ Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_
     return out;
 }
 
-Use ArrivalTracker::classify(Problem &p, const Arrival &arrival, bool &first_of_name) {
+// Whether the new-task bucket of `p` holds a token at `now` (refilled first); not taken.
+bool ArrivalTracker::new_task_token(Problem &p, double now) {
+    if (p.new_task_tokens < 0)
+        p.new_task_tokens = config_.new_task_burst;
+    else if (config_.new_task_interval_s > 0)
+        p.new_task_tokens =
+            std::min(config_.new_task_burst,
+                     p.new_task_tokens + (now - p.new_task_at) / config_.new_task_interval_s);
+    p.new_task_at = now;
+    return p.new_task_tokens >= 1;
+}
+
+Use ArrivalTracker::classify(Problem &p, const Arrival &arrival, double now, bool &first_of_name) {
     const std::string &task = arrival.task;
     if (p.tasks.count(task) || p.proposed.count(task))
         return Use::ESTIMATED;
-    if (arrival.problem.empty() || p.refused.count(task)) {
+    bool admitted = static_cast<std::size_t>(p.status.new_tasks) < config_.max_new_tasks &&
+                    new_task_token(p, now);
+    if (!arrival.problem.empty() && !p.refused.count(task) && !admitted)
+        ++p.status.new_tasks_held_back;
+    if (arrival.problem.empty() || p.refused.count(task) || !admitted) {
         ++p.status.unknown_task;
         auto &names = p.status.unknown_task_names;
         auto it = names.find(task);
@@ -100,6 +117,7 @@ Use ArrivalTracker::classify(Problem &p, const Arrival &arrival, bool &first_of_
         return Use::UNKNOWN_TASK;
     }
     p.proposed[task] = {task, arrival.problem, arrival.human_problem};
+    p.new_task_tokens -= 1;
     ++p.status.new_tasks;
     return Use::NEW_TASK;
 }

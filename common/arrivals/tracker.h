@@ -9,7 +9,11 @@
 //     taken in provisionally (it enters the estimate) and a re-evaluation that adds it is
 //     requested at once; if the answer comes back without the task, the coordinator refused
 //     it and the task counts as unknown from then on;
-//   - UNKNOWN_TASK otherwise: counted (per task name), not estimated.
+//   - UNKNOWN_TASK otherwise: counted (per task name), not estimated. New tasks are taken in
+//     at most new_task_burst at once then one per new_task_interval_s (a token bucket), and
+//     max_new_tasks in all, per problem (each costs
+//     planning; DDS without Security lets anyone publish them): beyond, an arrival of a new
+//     task counts as unknown (new_tasks_held_back) and may come again later.
 //
 // Re-weighting: besides the requests above, which may need planners and so wait for the
 // drift threshold, reweighs_due() names the problems whose estimate changed since their last
@@ -45,7 +49,10 @@ struct TrackerConfig {
     EstimatorConfig estimator;
     DriftConfig drift;
     IntakeConfig intake;
-    double reweigh_interval_s = 0.1; // per problem, at most this often; <= 0: never
+    double reweigh_interval_s = 0.1;  // per problem, at most this often; <= 0: never
+    std::size_t max_new_tasks = 64;   // new tasks taken in per problem, in all
+    double new_task_interval_s = 1.0; // per problem, one new task more this often
+    double new_task_burst = 8;        // new tasks taken in at once
 };
 
 struct NewTask {
@@ -99,6 +106,7 @@ struct ProblemStatus {
     long long unknown_task = 0; // arrivals of tasks the problem does not have
     long long new_tasks = 0;    // new tasks taken in
     long long refused_tasks = 0;
+    long long new_tasks_held_back = 0; // beyond max_new_tasks or the rate
     long long requests = 0;
     long long timeouts = 0;
     long long reweighs = 0; // re-weightings asked for (reweighs_due)
@@ -166,10 +174,13 @@ private:
         ProblemStatus status;
         long long reweighed_estimated = 0; // status.estimated at the last re-weighting
         double reweighed_at = -1e300;
-        bool designed = false; // a design was answered for it
+        double new_task_tokens = -1; // the new-task token bucket (-1: full, not yet used)
+        double new_task_at = 0;      // when it was last filled
+        bool designed = false;       // a design was answered for it
     };
 
-    Use classify(Problem &p, const Arrival &arrival, bool &first_of_name);
+    Use classify(Problem &p, const Arrival &arrival, double now, bool &first_of_name);
+    bool new_task_token(Problem &p, double now);
     Request make_request(Problem &p, Reason reason);
 
     TrackerConfig config_;

@@ -1,6 +1,6 @@
 #pragma once
 // The LCM channels of envdesign (SPEC.md "LCM"), each with its one message type. Clients
-// speak to the coordinator on the first four; the next five are between the coordinator and
+// speak to the coordinator on the first four; the next six are between the coordinator and
 // its planners; then the bridge's two; every service sends its status on the last
 // (services/README.md draws the message flow; docs/messages.md lists the fields).
 
@@ -15,6 +15,9 @@ inline constexpr const char *RESULT = "ENVDESIGN_RESULT";     // design_result_t
 // coordinator -> planners
 inline constexpr const char *SPEC = "ENVDESIGN_SPEC"; // spec_chunk_t
 inline constexpr const char *JOB = "ENVDESIGN_JOB";   // job_t
+// the job, as sent, taken back from its planner for a request that held none
+// (cluster/fair_share.h): the planner stops it and does not answer
+inline constexpr const char *WITHDRAW = "ENVDESIGN_WITHDRAW"; // job_t
 // planners -> coordinator
 inline constexpr const char *SPEC_NEED = "ENVDESIGN_SPEC_NEED";   // spec_need_t
 inline constexpr const char *EVALUATION = "ENVDESIGN_EVALUATION"; // evaluation_t
@@ -29,7 +32,7 @@ inline constexpr const char *STATUS = "ENVDESIGN_STATUS"; // service_status_t
 
 // Every channel above, for tools and tests.
 inline constexpr const char *ALL_CHANNELS[] = {
-    REQUEST,    CANCEL,    PROGRESS,          RESULT,     SPEC,  JOB, SPEC_NEED,
+    REQUEST,    CANCEL,    PROGRESS,          RESULT,     SPEC,  JOB, WITHDRAW, SPEC_NEED,
     EVALUATION, HEARTBEAT, TASK_DISTRIBUTION, REEVALUATE, STATUS};
 
 } // namespace envdesign::bus

@@ -12,14 +12,18 @@ namespace {
 constexpr std::uint32_t LCM_FRAGMENT_MAGIC = 0x4c433033; // "LC03"
 // The filter sees the datagram from its UDP header (8 bytes) on.
 constexpr std::uint32_t LCM_HEADER = 8;
-constexpr std::uint32_t FRAGMENT_OFFSET = LCM_HEADER + 12; // magic, seqno, size, offset
+constexpr std::uint32_t MESSAGE_SIZE = LCM_HEADER + 8; // magic, seqno, size, offset
+constexpr std::uint32_t FRAGMENT_OFFSET = LCM_HEADER + 12;
 
-// Accept everything but a fragment whose offset is beyond LCM_MAX_MESSAGE.
+// Accept everything but a fragment whose offset is beyond LCM_MAX_MESSAGE, or of a message
+// beyond BUS_MAX_MESSAGE.
 sock_filter FILTER[] = {
     BPF_STMT(BPF_LD | BPF_W | BPF_ABS, LCM_HEADER),
-    BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, LCM_FRAGMENT_MAGIC, 0, 3), // not a fragment: accept
+    BPF_JUMP(BPF_JMP | BPF_JEQ | BPF_K, LCM_FRAGMENT_MAGIC, 0, 5), // not a fragment: accept
     BPF_STMT(BPF_LD | BPF_W | BPF_ABS, FRAGMENT_OFFSET),
-    BPF_JUMP(BPF_JMP | BPF_JGT | BPF_K, LCM_MAX_MESSAGE, 0, 1),
+    BPF_JUMP(BPF_JMP | BPF_JGT | BPF_K, LCM_MAX_MESSAGE, 2, 0),
+    BPF_STMT(BPF_LD | BPF_W | BPF_ABS, MESSAGE_SIZE),
+    BPF_JUMP(BPF_JMP | BPF_JGT | BPF_K, BUS_MAX_MESSAGE, 0, 1),
     BPF_STMT(BPF_RET | BPF_K, 0), // drop
     BPF_STMT(BPF_RET | BPF_K, 0xFFFFFFFF),
 };

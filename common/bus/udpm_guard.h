@@ -7,6 +7,9 @@
 // The guard attaches a socket filter (classic BPF) to LCM's receive socket that drops
 // fragments whose offset lies beyond any message LCM takes (LCM_MAX_MESSAGE_SIZE, 2^28):
 // no genuine fragment has one, and below it the sum cannot wrap, so LCM's own check holds.
+// It also drops the fragments of a message larger than BUS_MAX_MESSAGE (issue 21: one
+// unsigned 250 MB message took a coordinator to 506 MB and stalled it for a second while
+// LCM reassembled it, before any check of ours could refuse it).
 //
 //   lcm::LCM lcm(url);
 //   lcm.getFileno();                   // LCM opens its receive socket lazily
@@ -21,6 +24,9 @@ namespace envdesign::bus {
 
 // The largest message LCM 1.3.1 reassembles (lcm.h's LCM_MAX_MESSAGE_SIZE).
 inline constexpr std::uint32_t LCM_MAX_MESSAGE = 1u << 28;
+// The largest message our services take: a request's spec is at most 48 MiB
+// (MAX_SPEC_BYTES_LIMIT, cluster/spec_chunks.h), and everything else is far smaller.
+inline constexpr std::uint32_t BUS_MAX_MESSAGE = 64u << 20;
 
 // The multicast port of a udpm:// URL (LCM's default 7667 when it names none); nothing for
 // other providers.

@@ -5,6 +5,7 @@
 #include "cluster/design_change.h"
 #include "cluster/spec_chunks.h"
 #include "cluster/wire.h"
+#include "design/numbers.h"
 #include "store/state_dir.h"
 
 #include <algorithm>
@@ -24,6 +25,9 @@ std::size_t spec_bytes(const envdesign::spec_t &spec) {
 }
 
 constexpr int MOST_RANKED = 100000; // as `envdesign design --ranking`
+// Client names are a host, a program and a process id: 128 bytes is room to spare, and a
+// refused name of 30 KB is not echoed back in a result.
+constexpr std::size_t MAX_CLIENT_NAME = 128;
 
 // Why `r` cannot be served (nullopt: it can).
 std::optional<std::string> request_problem(const design_request_t &r, std::size_t max_spec_bytes) {
@@ -38,8 +42,9 @@ std::optional<std::string> request_problem(const design_request_t &r, std::size_
     if (r.ranking < 0 || r.ranking > MOST_RANKED)
         return "ranking " + std::to_string(r.ranking) + " is not in 0.." +
                std::to_string(MOST_RANKED);
-    if (std::isnan(r.time_limit_s) || std::isinf(r.time_limit_s))
-        return "the time limit is not a number";
+    if (std::isnan(r.time_limit_s) ||
+        (r.time_limit_s >= 0 && design::number_problem(r.time_limit_s, design::TIME_LIMIT_S)))
+        return "the time limit " + *design::number_problem(r.time_limit_s, design::TIME_LIMIT_S);
     if (r.spec.name.empty())
         return "the spec has no name";
     if (std::size_t bytes = spec_bytes(r.spec); bytes > max_spec_bytes)
@@ -65,6 +70,7 @@ std::shared_ptr<store::RecordDb> open_evaluation_file(const CoordinatorConfig &c
     options.max_records = config.stored_evaluations;
     options.max_bytes = config.state_max_bytes;
     options.sync = config.state_sync;
+    options.secrets = config.state_secrets;
     return store::open_state_file(config.state_dir, options, log);
 }
 
@@ -75,10 +81,12 @@ Coordinator::Coordinator(bus::Bus &bus, CoordinatorConfig config)
       specs_(config_.instance),
       stores_(config_.stored_evaluations, open_evaluation_file(config_, bus.log())),
       status_(bus, "coordinator", config_.instance),
-      election_(config_.instance, status_.started_utime(), config_.election, Clock::now()) {
+      election_(config_.instance, status_.started_utime(), config_.election, Clock::now(),
+                bus.auth_sender()) {
     subscriptions_.push_back(bus_.subscribe<envdesign::service_status_t>(
-        bus::STATUS,
-        [this](const envdesign::service_status_t &s) { election_.heard(s, Clock::now()); }));
+        bus::STATUS, [this](const envdesign::service_status_t &s) {
+            election_.heard(s, Clock::now(), bus_.message_sender());
+        }));
     subscriptions_.push_back(bus_.subscribe<design_request_t>(
         bus::REQUEST, [this](const design_request_t &r) { on_request(r); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::cancel_t>(
@@ -101,6 +109,11 @@ Coordinator::~Coordinator() {
 void Coordinator::on_request(const design_request_t &request) {
     if (request.sender.empty() || request.request_id == 0) {
         bus_.reject(bus::REQUEST, "a request without client name or request id");
+        return;
+    }
+    if (request.sender.size() > MAX_CLIENT_NAME) { // nothing of it is kept, not even a result
+        bus_.reject(bus::REQUEST, "a client name of " + std::to_string(request.sender.size()) +
+                                      " bytes, more than " + std::to_string(MAX_CLIENT_NAME));
         return;
     }
     std::string name = bus::request_name(request.sender, request.request_id);
@@ -126,10 +139,10 @@ void Coordinator::on_request(const design_request_t &request) {
     }
     if (auto problem = request_problem(request, config_.max_spec_bytes)) {
         bus_.reject(bus::REQUEST, name + ": " + *problem);
-        closed_[name] = {error_result(2, "bad request: " + *problem), Clock::now()};
-        closed_[name].result.request_id = request.request_id;
-        closed_[name].result.client = request.sender;
-        publish_result(closed_[name].result);
+        auto result = error_result(2, "bad request: " + *problem);
+        result.request_id = request.request_id;
+        result.client = request.sender;
+        publish_result(std::move(result)); // not kept: a repeat is checked again, as cheaply
         return;
     }
     if (auto why = busy(request.sender)) {
@@ -144,8 +157,13 @@ void Coordinator::on_request(const design_request_t &request) {
     }
     bus_.log().info("request {} | accepted: spec {} with {} file(s)", name, request.spec.name,
                     request.spec.files.size());
-    RunContext context{bus_, router_, specs_, config_.grace_s,
-                       config_.stored_evaluations > 0 ? &stores_ : nullptr};
+    RunContext context{bus_,
+                       router_,
+                       specs_,
+                       config_.grace_s,
+                       config_.stored_evaluations > 0 ? &stores_ : nullptr,
+                       config_.max_time_limit_s,
+                       bus_.message_sender()};
     open_[name].run = std::make_unique<RequestRun>(context, request);
     open_[name].client_origin = bus_.message_sender();
     waiting_.push_back(name);
@@ -214,6 +232,7 @@ int Coordinator::tick() {
     elect(now);
     router_.tick();
     status_.tick([this](envdesign::service_status_t &s) { fill_status(s); });
+    report_bad_records();
     for (auto &[name, open] : open_)
         if (open.started) // waiting ones are told when their client repeats them
             publish_progress(open, now, false);
@@ -246,13 +265,25 @@ void Coordinator::elect(Clock::time_point now) {
     stats_.open = 0;
 }
 
+// Fair between clients: the next to start is the oldest waiting request of the client with
+// the fewest requests searching, so a client's requests wait behind its own.
 void Coordinator::start_waiting() {
     int active = 0;
+    std::map<std::string, int> searching; // by client
     for (const auto &[name, open] : open_)
-        active += open.started ? 1 : 0;
+        if (open.started) {
+            ++active;
+            ++searching[open.run->request().sender];
+        }
     while (election_.role() == Role::ACTIVE && active < config_.max_active && !waiting_.empty()) {
-        Open &open = open_.at(waiting_.front());
-        waiting_.pop_front();
+        auto next = waiting_.begin();
+        for (auto it = waiting_.begin(); it != waiting_.end(); ++it)
+            if (searching[open_.at(*it).run->request().sender] <
+                searching[open_.at(*next).run->request().sender])
+                next = it;
+        Open &open = open_.at(*next);
+        waiting_.erase(next);
+        ++searching[open.run->request().sender];
         open.run->start();
         open.started = true;
         ++active;
@@ -307,6 +338,19 @@ void Coordinator::publish_progress(Open &open, Clock::time_point now, bool force
     open.last_sent = p;
 }
 
+// Records of the state file whose tag or values failed their check were deleted, never used
+// (store/record_db.h): said once per new batch, and counted in the status.
+void Coordinator::report_bad_records() {
+    const auto &db = stores_.db();
+    long long rejected = db ? db->rejected() : 0;
+    if (rejected == bad_records_reported_)
+        return;
+    bus_.log().warn("request - | {} record(s) of {} failed their check (tag or values) and were "
+                    "deleted; they will be planned again",
+                    rejected - bad_records_reported_, db->path());
+    bad_records_reported_ = rejected;
+}
+
 void Coordinator::fill_status(envdesign::service_status_t &status) const {
     status.requests_waiting = static_cast<std::int32_t>(waiting_.size());
     status.requests_open = static_cast<std::int32_t>(open_.size()) - status.requests_waiting;
@@ -314,6 +358,8 @@ void Coordinator::fill_status(envdesign::service_status_t &status) const {
     status.jobs_in_flight = router_.pool().jobs_in_flight();
     status.stored_evaluations = static_cast<std::int64_t>(stores_.records());
     status.role = to_string(election_.role());
+    if (bad_records_reported_ > 0)
+        bus::add_drop(status, "store:evaluations.db", "bad-record", bad_records_reported_);
     std::lock_guard lock(stats_mutex_);
     status.jobs_done = stats_.results;
 }

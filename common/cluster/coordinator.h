@@ -38,9 +38,12 @@
 namespace envdesign::cluster {
 
 struct CoordinatorConfig {
-    std::string instance;   // this coordinator's name on the bus
-    int max_active = 4;     // requests searched at once
-    int max_waiting = 32;   // requests waiting for a search slot, from all clients
+    std::string instance; // this coordinator's name on the bus
+    // Requests searched at once. A search mostly waits for its planners' answers, and the
+    // planners are shared fairly between requests (fair_share.h), so this is high: a flood
+    // of requests that never end must not keep another client's request from starting.
+    int max_active = 64;
+    int max_waiting = 64;   // requests waiting for a search slot, from all clients
     int max_per_client = 8; // requests searching or waiting per client (sender)
     // The largest spec a request may carry (its text and files); larger is bad input.
     std::size_t max_spec_bytes = DEFAULT_MAX_SPEC_BYTES;
@@ -49,6 +52,9 @@ struct CoordinatorConfig {
     double progress_interval_s = 0.1; // progress at most this often per request
     double keepalive_s = 0.5;         // and at least this often while it is open
     double keep_results_s = 600;      // results kept for repeats of a request
+    // Every request ends within this (its own limit when smaller): a request without a time
+    // limit cannot hold a search slot and planners for ever.
+    double max_time_limit_s = 3600;
     // Task evaluations and bounds kept across requests (evaluation_stores.h), each a plan
     // of a few hundred bytes; 0: none kept.
     std::size_t stored_evaluations = 200'000;
@@ -60,6 +66,8 @@ struct CoordinatorConfig {
     // fsync every commit: survives power loss too, at ~5 ms a record on a VM disk; without,
     // a record survives the process being killed at any instant (store/record_db.h).
     bool state_sync = false;
+    // The bus keys: records are tagged HMAC-SHA256 with the first (empty: a checksum).
+    std::vector<std::string> state_secrets;
     ElectionConfig election; // who runs requests when several coordinators share a bus
 };
 
@@ -108,6 +116,7 @@ private:
     void publish_progress(Open &open, Clock::time_point now, bool force);
     void publish_result(envdesign::design_result_t result);
     void fill_status(envdesign::service_status_t &status) const;
+    void report_bad_records();
     void elect(Clock::time_point now);
 
     bus::Bus &bus_;
@@ -118,6 +127,7 @@ private:
     std::map<std::string, Open> open_;
     std::deque<std::string> waiting_;
     Clock::time_point last_tick_{};
+    long long bad_records_reported_ = 0; // the state file's rejected records, logged
     std::map<std::string, Closed> closed_;
     // The last design per (client, spec name) of requests with a reason: their `change`.
     std::map<std::string, std::vector<std::string>> last_designs_;

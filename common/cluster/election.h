@@ -2,8 +2,11 @@
 // One active coordinator per bus (issue 10). Every coordinator publishes its status once a
 // second (bus/status.h), with the wall-clock time it started (`started_utime`). A coordinator
 // is outranked by another that started earlier, or at the same microsecond and has the lower
-// instance name; the order is the same seen from every coordinator, since both numbers travel
-// in the status. A coordinator is
+// signed sender id (bus keys: bus/auth.h; without keys, the lower instance name); the order
+// is the same seen from every coordinator, since these travel with the status. Another
+// coordinator with this one's own name is a peer like any other (a status is this one's own
+// only if its start and sender id are too), so two clusters started with the same --name on
+// one bus do not both answer: the later stands by and says why. A coordinator is
 //   DISCOVERING  for `discovery_s` after it starts: it takes requests but starts none, so
 //                that it hears the others before it works (the status period is 1 s);
 //   STANDBY      while it has heard an outranking coordinator within `takeover_after_s`: it
@@ -45,11 +48,14 @@ class Election {
 public:
     using Clock = std::chrono::steady_clock;
 
+    // `sender_id`: this process's signed sender id on the bus (0 without keys).
     Election(std::string instance, std::int64_t started_utime, ElectionConfig config,
-             Clock::time_point now);
+             Clock::time_point now, std::uint64_t sender_id = 0);
 
-    // A status heard on ENVDESIGN_STATUS; only other coordinators' count.
-    void heard(const envdesign::service_status_t &status, Clock::time_point now);
+    // A status heard on ENVDESIGN_STATUS from bus sender `sender_id` (0 without keys); only
+    // other coordinators' count.
+    void heard(const envdesign::service_status_t &status, Clock::time_point now,
+               std::uint64_t sender_id = 0);
     // The role at `now`, and a line saying why if it changed since the last call.
     std::optional<std::string> update(Clock::time_point now);
     Role role() const { return role_; }
@@ -57,19 +63,22 @@ public:
     const std::string &active() const { return active_; }
 
 private:
-    struct Peer {
+    struct Peer { // a coordinator process: names may repeat, starts and sender ids do not
         std::int64_t started_utime;
-        Clock::time_point heard;
+        std::uint64_t sender_id;
+        std::string name;
+        auto operator<=>(const Peer &) const = default;
     };
-    bool outranks(const std::string &name, const Peer &peer) const;
+    bool outranks(const Peer &peer) const;
 
     std::string instance_;
     std::int64_t started_utime_;
+    std::uint64_t sender_id_;
     ElectionConfig config_;
     Clock::time_point discovered_; // the end of discovery
     Role role_;
     std::string active_;
-    std::map<std::string, Peer> peers_;
+    std::map<Peer, Clock::time_point> peers_; // when each was last heard
 };
 
 } // namespace envdesign::cluster

@@ -4,6 +4,7 @@
 #include "bus/log.h"
 #include "cluster/wire.h"
 
+#include <functional>
 #include <random>
 
 namespace envdesign::cluster {
@@ -50,8 +51,10 @@ std::int64_t first_job_id() {
 JobRouter::JobRouter(bus::Bus &bus, PoolConfig config, std::string instance)
     : bus_(bus), pool_(config), instance_(std::move(instance)), next_job_id_(first_job_id()) {}
 
-std::uint64_t JobRouter::open(Inbox &inbox) {
+std::uint64_t JobRouter::open(Inbox &inbox, const std::string &client) {
     std::uint64_t owner = next_owner_++;
+    if (!client.empty())
+        pool_.set_client(owner, std::hash<std::string>{}(client));
     std::lock_guard lock(inboxes_mutex_);
     inboxes_[owner] = &inbox;
     return owner;
@@ -119,6 +122,11 @@ void JobRouter::tick() {
 }
 
 void JobRouter::publish(const std::vector<envdesign::job_t> &jobs) {
+    for (const auto &job : pool_.take_withdrawals()) {
+        bus_.log().info("request {} | job {} withdrawn from {} for a request that had no planner",
+                        job.request_id, job.job_id, job.planner);
+        bus_.publish(bus::WITHDRAW, job);
+    }
     for (const auto &job : jobs) {
         if (job.attempt > 0)
             bus_.log().info("request {} | job {} re-sent to {} (attempt {})", job.request_id,

@@ -20,6 +20,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <string>
 
 namespace envdesign::cluster {
 
@@ -45,7 +46,9 @@ public:
     // `instance`: this coordinator's name; jobs carry it and answers must name it.
     JobRouter(bus::Bus &bus, PoolConfig config, std::string instance);
 
-    std::uint64_t open(Inbox &inbox);
+    // A new owner of jobs (a request) whose answers go to `inbox`; `client` is the unit of the
+    // planners' fair shares it counts for (fair_share.h: its process or its name).
+    std::uint64_t open(Inbox &inbox, const std::string &client = "");
     void close(std::uint64_t owner);
     // Sends `job` (request_id, spec and content filled) for `owner`; returns its job_id.
     std::int64_t send(std::uint64_t owner, envdesign::job_t job);

@@ -38,6 +38,7 @@ struct RemoteRequest {
     std::int64_t request_id = 0;
     std::string spec_hash;
     std::int8_t heuristic = 0;
+    std::string client; // the unit of the planners' fair shares (JobRouter::open)
 };
 
 class LcmEvaluator : public design::Evaluator {

@@ -15,7 +15,8 @@ namespace envdesign::cluster {
 // One worker's evaluators, one per (spec, heuristic), each with its own plan cache.
 class WorkerCaches {
 public:
-    explicit WorkerCaches(int max_specs) : max_(max_specs) {}
+    WorkerCaches(int max_specs, std::size_t memory_bytes)
+        : max_(max_specs), memory_bytes_(memory_bytes) {}
 
     design::LocalEvaluator &get(const std::shared_ptr<const LoadedSpec> &spec,
                                 std::int8_t heuristic) {
@@ -26,6 +27,7 @@ public:
                 entries_.clear(); // rare: more specs in use than kept; start over
             planning::PlannerOptions options;
             options.heuristic = heuristic_kind(heuristic);
+            options.limits.memory_limit_bytes = memory_bytes_;
             Entry entry{spec, std::make_unique<design::LocalEvaluator>(*spec->problem, 1, options)};
             it = entries_.emplace(key, std::move(entry)).first;
         }
@@ -38,6 +40,7 @@ private:
         std::unique_ptr<design::LocalEvaluator> evaluator;
     };
     int max_;
+    std::size_t memory_bytes_;
     std::map<std::string, Entry> entries_;
 };
 
@@ -49,6 +52,8 @@ Planner::Planner(bus::Bus &bus, PlannerConfig config)
         bus::JOB, [this](const envdesign::job_t &job) { on_job(job); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::spec_chunk_t>(
         bus::SPEC, [this](const envdesign::spec_chunk_t &chunk) { on_chunk(chunk); }));
+    subscriptions_.push_back(bus_.subscribe<envdesign::job_t>(
+        bus::WITHDRAW, [this](const envdesign::job_t &job) { on_withdraw(job); }));
     for (int i = 0; i < std::max(1, config_.workers); ++i)
         workers_.emplace_back([this] { work(); });
     heartbeat(false);
@@ -117,8 +122,12 @@ void Planner::drop_stale_parked(Clock::time_point now) {
 
 void Planner::stop() {
     stopping_ = true;
-    heartbeat(true);
-    bus_.log().info("request - | stopping: no more jobs");
+    heartbeat(true); // first: the coordinators move the jobs before their searches stop
+    cancelled_ = true;
+    std::lock_guard lock(mutex_);
+    for (auto &[id, run] : running_)
+        *run.stop = true;
+    bus_.log().info("request - | stopping: no more jobs, running ones stopped");
 }
 
 void Planner::fill_status(envdesign::service_status_t &status) const {
@@ -178,6 +187,38 @@ void Planner::on_job(const envdesign::job_t &job) {
     asked_.try_emplace(job.spec_hash, job.sender, Clock::time_point{});
     lock.unlock();
     ask_for_specs(Clock::now());
+}
+
+// A job its coordinator took back for another request (cluster/fair_share.h): stopped if it
+// runs, skipped if it waits; either way not answered.
+void Planner::on_withdraw(const envdesign::job_t &job) {
+    if (job.planner != config_.instance)
+        return;
+    std::lock_guard lock(mutex_);
+    if (!held_.count(job.job_id))
+        return; // answered already, or never here
+    if (auto run = running_.find(job.job_id); run != running_.end())
+        *run->second.stop = true;
+    else
+        withdrawn_.insert(job.job_id);
+    bus_.log().info("request {} | job {} withdrawn by {}", job.request_id, job.job_id, job.sender);
+}
+
+// Under mutex_: a job dropped unanswered. Jobs waiting for the same content go on: the
+// first computes it.
+void Planner::abandon(const envdesign::job_t &job) {
+    held_.erase(job.job_id);
+    running_.erase(job.job_id);
+    auto it = followers_.find(job_content(job));
+    if (it == followers_.end())
+        return;
+    std::vector<envdesign::job_t> waiting = std::move(it->second);
+    followers_.erase(it);
+    if (waiting.empty())
+        return;
+    queue_.push_back({waiting.front(), Clock::now()});
+    followers_[job_content(job)].assign(waiting.begin() + 1, waiting.end());
+    work_ready_.notify_one();
 }
 
 void Planner::on_chunk(const envdesign::spec_chunk_t &chunk) {
@@ -250,7 +291,12 @@ void Planner::heartbeat(bool stopping) {
             beat.jobs.push_back(id);
         }
         beat.jobs_done = stats_.jobs_done;
+        // Running jobs count as they run: coordinators see a long search is being worked on
+        // and do not send it to a second planner (planner_pool.h).
         beat.busy_seconds = stats_.busy_seconds;
+        auto now = Clock::now();
+        for (const auto &[id, run] : running_)
+            beat.busy_seconds += std::chrono::duration<double>(now - run.start).count();
     }
     beat.num_jobs = static_cast<std::int16_t>(beat.jobs.size());
     beat.specs_cached = specs_.size();
@@ -261,9 +307,10 @@ void Planner::heartbeat(bool stopping) {
 }
 
 void Planner::work() {
-    WorkerCaches caches(config_.max_specs);
+    WorkerCaches caches(config_.max_specs, config_.job_memory_bytes);
     while (true) {
         Pending pending;
+        std::shared_ptr<std::atomic<bool>> stop;
         {
             std::unique_lock lock(mutex_);
             work_ready_.wait(lock, [&] { return closing_ || !queue_.empty(); });
@@ -271,9 +318,20 @@ void Planner::work() {
                 return;
             pending = std::move(queue_.front());
             queue_.pop_front();
+            if (withdrawn_.erase(pending.job.job_id) || cancelled_) {
+                abandon(pending.job);
+                continue;
+            }
+            stop = std::make_shared<std::atomic<bool>>(false);
+            running_[pending.job.job_id] = {Clock::now(), stop};
         }
         auto start = Clock::now();
-        envdesign::evaluation_t answer = evaluate(pending, caches);
+        envdesign::evaluation_t answer = evaluate(pending, caches, stop.get());
+        if (stop->load()) { // withdrawn or stopping: not an answer, the job went elsewhere
+            std::lock_guard lock(mutex_);
+            abandon(pending.job);
+            continue;
+        }
         answer.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         answer.queued_seconds = std::chrono::duration<double>(start - pending.received).count();
         bus_.publish(bus::EVALUATION, answer);
@@ -290,6 +348,7 @@ std::vector<envdesign::evaluation_t> Planner::answered(const envdesign::job_t &j
     {
         std::lock_guard lock(mutex_);
         held_.erase(answer.job_id); // after publishing: a heartbeat never misses a job between
+        running_.erase(answer.job_id);
         ++stats_.jobs_done;
         stats_.busy_seconds += answer.seconds;
         remember_by_id(answer);
@@ -333,7 +392,8 @@ void Planner::remember_by_id(const envdesign::evaluation_t &answer) {
     }
 }
 
-envdesign::evaluation_t Planner::evaluate(const Pending &pending, WorkerCaches &caches) {
+envdesign::evaluation_t Planner::evaluate(const Pending &pending, WorkerCaches &caches,
+                                          const std::atomic<bool> *stop) {
     const envdesign::job_t &job = pending.job;
     envdesign::evaluation_t answer{};
     answer.utime = bus::now_utime();
@@ -358,8 +418,10 @@ envdesign::evaluation_t Planner::evaluate(const Pending &pending, WorkerCaches &
         design::LocalEvaluator &evaluator = caches.get(spec, job.heuristic);
         // The time left when the job arrived, less its wait here; 0 stays "no limit".
         double waited = std::chrono::duration<double>(Clock::now() - pending.received).count();
-        design::Deadline deadline = design::Deadline::in(
-            job.time_limit_s > 0 ? std::max(job.time_limit_s - waited, 1e-3) : 0);
+        design::Deadline deadline =
+            design::Deadline::in(job.time_limit_s > 0 ? std::max(job.time_limit_s - waited, 1e-3)
+                                                      : 0)
+                .with_stop(stop);
         design::Configuration configuration = configuration_of(job);
         design::EvaluatorCounters before = evaluator.counters();
         if (job.kind == envdesign::job_t::KIND_ROBOT_BOUND)

@@ -16,10 +16,14 @@
 //     sends it (a restarted coordinator re-sends what it had in flight); one whose content
 //     is being worked on waits for that answer instead of computing it again.
 //   - Each worker has its own plan cache per spec, so a job's counters are its own.
+//   - A job withdrawn on ENVDESIGN_WITHDRAW (its coordinator gave the slot to another
+//     request) stops at once and is not answered; its heartbeats count running jobs' time,
+//     so coordinators see it working.
 //
 //   Planner planner(bus, config);
 //   while (running) { bus.handle(20ms); planner.tick(); }
-//   planner.stop();   // a last heartbeat says it is going; running jobs finish
+//   planner.stop();   // a last heartbeat says it is going; running jobs stop at once (their
+//                     // coordinators send them elsewhere), so SIGTERM ends it within a second
 
 #include "bus/bus.h"
 #include "bus/status.h"
@@ -31,6 +35,8 @@
 #include <atomic>
 #include <condition_variable>
 #include <deque>
+#include <map>
+#include <memory>
 #include <set>
 #include <thread>
 
@@ -46,6 +52,9 @@ struct PlannerConfig {
     int answers_kept = 4096;         // by job id, for re-sent jobs
     int remembered_answers = 16'384; // by content (answer_memory.h), each about a plan's size
     SpecLimits spec_limits;          // what chunks from the bus may make it hold
+    // Search data one job may hold (A*'s registry, per-state data, open list): a job that
+    // needs more is answered LIMIT, so the planner's size stays near workers x this.
+    std::size_t job_memory_bytes = std::size_t{1} << 30;
 };
 
 struct PlannerStats {
@@ -74,12 +83,15 @@ private:
 
     void on_job(const envdesign::job_t &job);
     void on_chunk(const envdesign::spec_chunk_t &chunk);
+    void on_withdraw(const envdesign::job_t &job);
+    void abandon(const envdesign::job_t &job);
     void ask_for_specs(Clock::time_point now);
     void drop_stale_parked(Clock::time_point now);
     void heartbeat(bool stopping);
     void fill_status(envdesign::service_status_t &status) const;
     void work();
-    envdesign::evaluation_t evaluate(const Pending &pending, class WorkerCaches &caches);
+    envdesign::evaluation_t evaluate(const Pending &pending, class WorkerCaches &caches,
+                                     const std::atomic<bool> *stop);
     // Bookkeeping after `job`'s answer was published; returns the answers of the jobs that
     // waited for the same content, to publish and then release().
     std::vector<envdesign::evaluation_t> answered(const envdesign::job_t &job,
@@ -106,6 +118,13 @@ private:
     PlannerStats stats_;
     bool closing_ = false;
     std::atomic<bool> stopping_{false};
+    std::atomic<bool> cancelled_{false}; // after stop(): running searches end as at a limit
+    struct Running {
+        Clock::time_point start;
+        std::shared_ptr<std::atomic<bool>> stop; // withdrawn or stopping: the search ends
+    };
+    std::map<std::int64_t, Running> running_; // by job id, under mutex_
+    std::set<std::int64_t> withdrawn_;        // queued jobs taken back, under mutex_
     Clock::time_point last_beat_{};
     Clock::time_point last_tick_{};
     bus::StatusPublisher status_;

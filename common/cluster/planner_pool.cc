@@ -3,6 +3,7 @@
 #include "bus/log.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace envdesign::cluster {
 
@@ -29,10 +30,15 @@ std::vector<envdesign::job_t> PlannerPool::heartbeat(const envdesign::planner_he
             events->push_back("planner " + beat.sender + " joined with " +
                               std::to_string(beat.capacity) + " worker(s)");
     }
-    it->second.slots = std::max(1, static_cast<int>(beat.capacity)) * config_.jobs_per_slot;
+    it->second.workers = std::max(1, static_cast<int>(beat.capacity));
+    it->second.slots = it->second.workers * config_.jobs_per_slot;
     it->second.last_beat = now;
+    if (beat.busy_seconds > it->second.busy_seconds)
+        it->second.busy_grew = now;
+    it->second.busy_seconds = beat.busy_seconds;
     std::set<std::int64_t> held(beat.jobs.begin(), beat.jobs.end());
     std::erase_if(it->second.overdue, [&](const auto &job) { return !held.count(job.first); });
+    std::erase_if(it->second.withdrawn, [&](std::int64_t job) { return !held.count(job); });
     auto lost_before = now - std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(config_.lost_after_s));
     std::vector<std::int64_t> lost;
@@ -50,6 +56,11 @@ std::optional<JobRecord> PlannerPool::answer(std::int64_t job_id, const std::str
     std::lock_guard lock(mutex_);
     auto it = jobs_.find(job_id);
     note_answer_time(from, job_id, it == jobs_.end() ? nullptr : &it->second, now);
+    if (auto planner = planners_.find(from); planner != planners_.end())
+        planner->second.withdrawn.erase(job_id); // answered before the withdrawal arrived
+    if (it != jobs_.end() && it->second.planner == from)
+        fair_.add_service(client_of(it->second.owner),
+                          std::chrono::duration<double>(now - it->second.sent).count());
     if (it == jobs_.end()) {
         ++counters_.duplicates; // answered already, or never ours
         if (auto a = answered_.find(job_id); a != answered_.end())
@@ -88,7 +99,7 @@ std::vector<envdesign::job_t> PlannerPool::expire(Clock::time_point now, Events 
 void PlannerPool::take_overdue(Clock::time_point now, Events *events) {
     std::vector<std::int64_t> overdue;
     for (const auto &[id, record] : jobs_)
-        if (!record.planner.empty() && now - record.sent > deadline())
+        if (!record.planner.empty() && this->overdue(record, now))
             overdue.push_back(id);
     for (std::int64_t id : overdue) {
         JobRecord &record = jobs_.at(id);
@@ -129,6 +140,23 @@ void PlannerPool::note_answer_time(const std::string &from, std::int64_t job_id,
     if (sent)
         longest_answer_s_ =
             std::max(longest_answer_s_, std::chrono::duration<double>(now - *sent).count());
+}
+
+// A planner is working while its busy time grew within the last second (it counts the jobs
+// it runs; one that only lists jobs does not).
+bool PlannerPool::Planner::working(Clock::time_point now) const {
+    return now - busy_grew < std::chrono::seconds(1);
+}
+
+bool PlannerPool::overdue(const JobRecord &record, Clock::time_point now) const {
+    if (now - record.sent <= deadline())
+        return false;
+    auto holder = planners_.find(record.planner);
+    if (holder == planners_.end() || !holder->second.working(now))
+        return true;
+    double limit = record.message.time_limit_s;
+    return limit > 0 && std::chrono::duration<double>(now - record.sent).count() >
+                            limit + config_.working_grace_s;
 }
 
 PlannerPool::Clock::duration PlannerPool::deadline() const {
@@ -203,6 +231,7 @@ void PlannerPool::forget_owner(std::uint64_t owner) {
             if (record.owner == owner)
                 ids.push_back(id);
         owners_.erase(owner);
+        clients_.erase(owner); // the client's service stays: it is the client's history
     }
     forget(ids);
 }
@@ -231,12 +260,14 @@ void PlannerPool::remember_answered(std::int64_t job_id, std::uint64_t owner) {
 // Sends queued jobs while some live planner has a free slot.
 std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
     std::vector<envdesign::job_t> out;
+    bool contended = this->contended();
     while (!queue_.empty()) {
-        JobRecord &record = jobs_.at(queue_.front());
-        auto planner = pick_planner(record);
+        auto next = next_fair();
+        JobRecord &record = jobs_.at(*next);
+        auto planner = pick_planner(record, contended);
         if (!planner)
             break;
-        queue_.pop_front();
+        queue_.erase(next);
         ++planners_[*planner].holding;
         record.planner = *planner;
         record.sent = now;
@@ -253,12 +284,96 @@ std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
         ++owner.jobs_sent;
         out.push_back(record.message);
     }
+    if (!queue_.empty())
+        withdraw_for_waiting(now, contended);
     return out;
+}
+
+void PlannerPool::set_client(std::uint64_t owner, std::uint64_t client) {
+    std::lock_guard lock(mutex_);
+    clients_[owner] = client;
+}
+
+std::uint64_t PlannerPool::client_of(std::uint64_t owner) const {
+    auto it = clients_.find(owner);
+    return it == clients_.end() ? owner : it->second;
+}
+
+FairShare::Held PlannerPool::held() const {
+    FairShare::Held held;
+    for (const auto &[id, record] : jobs_)
+        if (!record.planner.empty())
+            ++held[client_of(record.owner)];
+    return held;
+}
+
+std::deque<std::int64_t>::iterator PlannerPool::next_fair() {
+    std::vector<std::uint64_t> clients;
+    for (std::int64_t id : queue_)
+        clients.push_back(client_of(jobs_.at(id).owner));
+    return queue_.begin() + static_cast<std::ptrdiff_t>(fair_.next(clients, held()));
+}
+
+bool PlannerPool::contended() const {
+    std::optional<std::uint64_t> first;
+    for (const auto &[id, record] : jobs_) {
+        std::uint64_t client = client_of(record.owner);
+        if (first && *first != client)
+            return true;
+        first = client;
+    }
+    return false;
+}
+
+// No slot is free and jobs wait: withdraw the jobs that give the clients below their share
+// a slot each (fair_share.h). A withdrawn job's slot frees when its planner lets go of it,
+// so the withdrawals still pending count as slots on the way.
+void PlannerPool::withdraw_for_waiting(Clock::time_point now, bool contended) {
+    int slots = 0, pending = 0;
+    for (const auto &[name, planner] : planners_) {
+        slots += contended ? planner.workers : planner.slots;
+        pending += static_cast<int>(planner.withdrawn.size());
+    }
+    std::vector<std::uint64_t> clients;
+    for (std::int64_t id : queue_)
+        clients.push_back(client_of(jobs_.at(id).owner));
+    std::set<std::uint64_t> waiting(clients.begin(), clients.end());
+    while (pending < static_cast<int>(waiting.size())) {
+        std::vector<FairShare::Running> running;
+        for (const auto &[id, record] : jobs_)
+            if (!record.planner.empty())
+                running.push_back({id, client_of(record.owner),
+                                   std::chrono::duration<double>(now - record.sent).count(),
+                                   record.preemptions});
+        auto victim = fair_.victim(clients, running, held(), slots);
+        if (!victim)
+            return;
+        withdraw(*victim, now);
+        ++pending;
+    }
+}
+
+void PlannerPool::withdraw(std::int64_t id, Clock::time_point now) {
+    JobRecord &record = jobs_.at(id);
+    planners_.at(record.planner).withdrawn.insert(id);
+    ++record.preemptions;
+    ++counters_.withdrawn;
+    fair_.add_service(client_of(record.owner),
+                      std::chrono::duration<double>(now - record.sent).count());
+    withdrawals_.push_back(record.message);
+    requeue(id);
+    queue_.erase(std::find(queue_.begin(), queue_.end(), id));
+    queue_.push_back(id); // behind the waiting work it yielded to
+}
+
+std::vector<envdesign::job_t> PlannerPool::take_withdrawals() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(withdrawals_, {});
 }
 
 // Round robin over planners with a free slot, preferring one that has not had this job;
 // demoted planners only when no other has a free slot.
-std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record) {
+std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record, bool contended) {
     for (bool demoted : {false, true}) {
         std::optional<std::string> fallback;
         auto start = planners_.upper_bound(last_pick_);
@@ -266,7 +381,7 @@ std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record) {
             if (start == planners_.end())
                 start = planners_.begin();
             const auto &[name, planner] = *start;
-            if (!planner.free() || planner.demoted != demoted)
+            if (!planner.free(contended) || planner.demoted != demoted)
                 continue;
             if (!record.tried.count(name)) {
                 last_pick_ = name;

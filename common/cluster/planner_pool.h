@@ -5,21 +5,28 @@
 //
 // Rules:
 //   - a job goes to a live planner with a free slot, round robin; with no free slot it
-//     waits in a FIFO queue and goes out as soon as a slot frees;
+//     waits in a queue and goes out as soon as a slot frees. The queue is fair between
+//     requests (fair_share.h): the request holding the fewest slots, then served least,
+//     goes first, and a request holding none gets one by withdrawing (take_withdrawals())
+//     the youngest job past its quantum of the request holding the most; the withdrawn
+//     job's slot stays taken until its planner lets go of it;
 //   - a planner that has been silent for planner_timeout_s, or says it is stopping, is
 //     gone: its jobs are queued again (attempt + 1), preferably for another planner;
 //   - a job the planner's heartbeat does not list although it was sent lost_after_s before
 //     that heartbeat arrived was lost (or its answer was): it is sent again (same job_id);
 //   - a job still held after its deadline (max(job_deadline_s, deadline_factor x the longest
 //     answer time seen)) is taken from its holder and sent again, preferably to another
-//     planner; the holder's slot stays taken until it answers or stops listing the job (so
-//     a planner that lists jobs and never answers soon gets none), and after demote_after
+//     planner, unless the holder is working (its heartbeats' busy time grows): then the job
+//     stays until its own time limit (+ working_grace_s) passes, so that a long search is
+//     never run twice at once; the holder's slot stays taken until it answers or stops listing the
+//     job (so a planner that lists jobs and never answers soon gets none), and after demote_after
 //     missed deadlines in a row it is demoted: it gets jobs only when no other planner has
 //     a free slot, until it answers one in time;
 //   - an answer counts only from a planner the job was sent to (sent_to());
 //   - the first answer to a job wins; later ones are duplicates.
 // Thread-safe.
 
+#include "cluster/fair_share.h"
 #include "envdesign/job_t.hpp"
 #include "envdesign/planner_heartbeat_t.hpp"
 
@@ -45,6 +52,8 @@ struct PoolConfig {
     double job_deadline_s = 5.0; // the least deadline of a job
     double deadline_factor = 4;  // x the longest time a planner took to answer
     int demote_after = 2;        // missed deadlines in a row
+    double working_grace_s = 2;  // past a job's time limit, a working holder keeps it this long
+    double quantum_s = 2;        // a job runs this long (x2 per withdrawal) before it may yield
 };
 
 struct PoolCounters {
@@ -54,6 +63,7 @@ struct PoolCounters {
     long long planners_joined = 0;
     long long planners_lost = 0;
     long long deadlines_missed = 0; // jobs taken from their holder at their deadline
+    long long withdrawn = 0;        // jobs withdrawn for a request that held no slot
     long long planners_demoted = 0;
     std::set<std::string> answered_by; // planners that answered
 };
@@ -65,6 +75,7 @@ struct JobRecord {
     std::string planner; // holding it; empty while queued
     std::chrono::steady_clock::time_point sent;
     std::set<std::string> tried;
+    int preemptions = 0; // times withdrawn for another request (fair_share.h)
 };
 
 class PlannerPool {
@@ -74,6 +85,9 @@ public:
 
     explicit PlannerPool(PoolConfig config) : config_(config) {}
 
+    // The client `owner`'s requests count for in the fair shares (fair_share.h); an owner
+    // never named is a client of its own.
+    void set_client(std::uint64_t owner, std::uint64_t client);
     // Queues `job` (job_id set by the caller) for `owner`; returns what to publish now.
     std::vector<envdesign::job_t> submit(std::uint64_t owner, envdesign::job_t job,
                                          Clock::time_point now);
@@ -83,6 +97,8 @@ public:
     // a duplicate or a job this pool never sent. `to_send` gets jobs the freed slot takes.
     std::optional<JobRecord> answer(std::int64_t job_id, const std::string &from,
                                     std::vector<envdesign::job_t> &to_send, Clock::time_point now);
+    // Jobs withdrawn from their planners since the last call (publish them on WITHDRAW).
+    std::vector<envdesign::job_t> take_withdrawals();
     // Planners silent too long are gone; returns the resends.
     std::vector<envdesign::job_t> expire(Clock::time_point now, Events *events = nullptr);
     // Forgets jobs (their request ended or stopped waiting for them).
@@ -113,11 +129,28 @@ private:
         std::map<std::int64_t, Clock::time_point> overdue; // taken at their deadline: when sent
         int misses = 0;                                    // deadlines in a row
         bool demoted = false;
-        bool free() const { return holding + static_cast<int>(overdue.size()) < slots; }
+        double busy_seconds = 0;     // as its last heartbeat said (running jobs included)
+        Clock::time_point busy_grew; // when that last grew
+        bool working(Clock::time_point now) const;
+        std::set<std::int64_t> withdrawn; // taken for another request, not yet let go of
+        int workers = 1;                  // its capacity: jobs it runs at once
+        // A free slot; while clients contend (`contended`), jobs are not queued behind a
+        // running one in the planner (a fair share would then wait there): one per worker.
+        bool free(bool contended) const {
+            int taken = holding + static_cast<int>(overdue.size() + withdrawn.size());
+            return taken < (contended ? workers : slots);
+        }
     };
 
     std::vector<envdesign::job_t> assign(Clock::time_point now);
-    std::optional<std::string> pick_planner(const JobRecord &record);
+    FairShare::Held held() const;
+    std::uint64_t client_of(std::uint64_t owner) const;
+    std::deque<std::int64_t>::iterator next_fair();
+    void withdraw_for_waiting(Clock::time_point now, bool contended);
+    void withdraw(std::int64_t job_id, Clock::time_point now);
+    bool overdue(const JobRecord &record, Clock::time_point now) const;
+    std::optional<std::string> pick_planner(const JobRecord &record, bool contended);
+    bool contended() const; // jobs of more than one client are queued or held
     void requeue(std::int64_t job_id);
     void release(JobRecord &record);
     void drop_planner(const std::string &name, Events *events, const char *why);
@@ -139,6 +172,9 @@ private:
     std::map<std::int64_t, std::uint64_t> answered_;
     std::deque<std::int64_t> answered_order_;
     double longest_answer_s_ = 0;
+    FairShare fair_{config_.quantum_s};
+    std::map<std::uint64_t, std::uint64_t> clients_; // owner -> client (set_client)
+    std::vector<envdesign::job_t> withdrawals_;
 };
 
 } // namespace envdesign::cluster

@@ -107,8 +107,12 @@ void RequestRun::run() {
 }
 
 void RequestRun::search(const design::DesignProblem &problem, const std::string &hash) {
+    // The fair-share unit: the sending process where bus keys name it, else the client name.
+    std::string client = context_.client_origin != 0
+                             ? "process " + std::to_string(context_.client_origin)
+                             : "client " + request_.sender;
     LcmEvaluator evaluator(problem, context_.router,
-                           {request_.request_id, hash, request_.heuristic}, cancelled_,
+                           {request_.request_id, hash, request_.heuristic, client}, cancelled_,
                            context_.grace_s);
     {
         std::lock_guard lock(mutex_);
@@ -187,6 +191,9 @@ design::DesignSearchOptions RequestRun::options(const design::DesignProblem &pro
         request_.max_design_size >= 0 ? request_.max_design_size : problem.max_design_size;
     options.ranking = request_.ranking;
     double seconds = request_.time_limit_s >= 0 ? request_.time_limit_s : problem.time_limit_s;
+    double cap = context_.max_time_limit_s;
+    if (cap > 0 && (seconds <= 0 || seconds > cap))
+        seconds = cap; // 0 was "no limit"
     options.deadline = design::Deadline::in(seconds);
     options.batch_size = std::max(8, 4 * context_.router.pool().capacity());
     return options;

@@ -24,6 +24,9 @@ inline constexpr int CHUNK_BYTES = 32000;
 // The largest spec encoding (spec text and inlined PDDL files) a service takes by default:
 // far above real design problems (the paper's are under 100 KB), far below what hurts.
 inline constexpr std::size_t DEFAULT_MAX_SPEC_BYTES = 16u << 20;
+// The most --max-spec-bytes may raise it to: a request carrying it (one LCM message) must stay
+// below the bus's own cap (bus/udpm_guard.h, BUS_MAX_MESSAGE).
+inline constexpr std::size_t MAX_SPEC_BYTES_LIMIT = 48u << 20;
 
 // SHA-256 of `bytes`, lower-case hex.
 std::string content_hash(const std::string &bytes);

@@ -2,6 +2,7 @@
 
 #include "bus/log.h"
 #include "cluster/wire_explanation.h"
+#include "design/numbers.h"
 #include "design/objective.h"
 #include "envdesign/design_request_t.hpp"
 
@@ -11,8 +12,6 @@ namespace envdesign::cluster {
 namespace {
 
 using envdesign::evaluation_t;
-
-bool valid_cost(double v) { return !std::isnan(v) && v >= 0; } // +inf allowed
 
 // The fields task_result_t and evaluation_t share.
 template <typename Message>
@@ -71,8 +70,8 @@ std::optional<std::string> job_problem(const envdesign::job_t &job,
     if (job.heuristic < envdesign::design_request_t::HEURISTIC_LMCUT ||
         job.heuristic > envdesign::design_request_t::HEURISTIC_BLIND)
         return "unknown heuristic " + std::to_string(job.heuristic);
-    if (!(job.time_limit_s >= 0) || std::isinf(job.time_limit_s))
-        return "the time limit is not a non-negative number";
+    if (auto why = design::number_problem(job.time_limit_s, design::TIME_LIMIT_S))
+        return "the time limit " + *why;
     return std::nullopt;
 }
 
@@ -86,17 +85,14 @@ std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t
     if (e.status < evaluation_t::STATUS_SOLVED || e.status > evaluation_t::STATUS_ERROR)
         return "unknown status " + std::to_string(e.status);
     if (kind == envdesign::job_t::KIND_ROBOT_BOUND)
-        return e.has_robot_bound && !valid_cost(e.robot_bound)
-                   ? std::optional<std::string>("the robot bound is not a cost")
+        return e.has_robot_bound && !design::valid_plan_cost(e.robot_bound)
+                   ? std::optional<std::string>("the robot bound is not a cost in [0, 2^31) or "
+                                                "infinite")
                    : std::nullopt;
     if (e.status != evaluation_t::STATUS_SOLVED && e.status != evaluation_t::STATUS_INEXPLICABLE)
         return std::nullopt;
-    if (!valid_cost(e.ie) || !valid_cost(e.robot_cost) || !valid_cost(e.human_plan_cost) ||
-        (e.has_human_optimal_cost && !valid_cost(e.human_optimal_cost)))
-        return "a cost or IE is not a non-negative number";
-    if (e.has_explanation)
-        return model_explanation_problem(e.explanation);
-    return std::nullopt;
+    // The same check as a record read back from the store (design/numbers.h).
+    return design::evaluation_problem(job_answer(design::Job{}, e).explicability);
 }
 
 void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {

@@ -21,12 +21,6 @@ design::TaskExplanation model_explanation_value(const envdesign::model_explanati
     return {m.found != 0, m.robot_optimal_cost, m.robot_plan, m.differences};
 }
 
-std::optional<std::string> model_explanation_problem(const envdesign::model_explanation_t &m) {
-    if (std::isnan(m.robot_optimal_cost) || m.robot_optimal_cost < 0)
-        return "the explanation's robot cost is not a non-negative number";
-    return std::nullopt;
-}
-
 void put_option(const design::ObjectiveWeights &weights, const design::TaskExplicability &t,
                 envdesign::task_result_t &m) {
     m.has_explanation =

@@ -15,9 +15,6 @@ namespace envdesign::cluster {
 envdesign::model_explanation_t model_explanation_message(const design::TaskExplanation &x);
 design::TaskExplanation model_explanation_value(const envdesign::model_explanation_t &m);
 
-// Why `m` cannot be an explanation (a cost that is not a non-negative number).
-std::optional<std::string> model_explanation_problem(const envdesign::model_explanation_t &m);
-
 // In EXPLAINING mode with an explanation: the option taken (explaining.h) in `m`'s ie,
 // robot_cost, plan and its explanation fields; otherwise nothing changes.
 void put_option(const design::ObjectiveWeights &weights, const design::TaskExplicability &t,

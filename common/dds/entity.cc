@@ -1,8 +1,29 @@
 #include "dds/entity.h"
 
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <utility>
 
 namespace envdesign::dds {
+
+bool security_configured() {
+    const char *uri = std::getenv("CYCLONEDDS_URI");
+    if (!uri)
+        return false;
+    std::string text = uri;
+    std::string all = text;
+    std::stringstream parts(text);
+    for (std::string part; std::getline(parts, part, ',');) {
+        auto start = part.find_first_not_of(" \t");
+        if (start == std::string::npos || part.compare(start, 7, "file://") != 0)
+            continue;
+        std::ifstream file(part.substr(start + 7));
+        all += std::string(std::istreambuf_iterator<char>(file), {});
+    }
+    return all.find("<Security") != std::string::npos;
+}
 
 DdsError::DdsError(const std::string &what, dds_return_t code)
     : std::runtime_error(what + ": " + dds_strretcode(-code)), code_(code) {}

@@ -37,6 +37,11 @@ private:
 // `rc` when it is not negative; otherwise throws DdsError "WHAT: <dds_strretcode>".
 dds_return_t check(dds_return_t rc, const char *what);
 
+// Whether Cyclone's configuration ($CYCLONEDDS_URI: inline XML, or file:// paths, comma
+// separated) has a <Security> section (DDS Security: authenticated, access-controlled
+// participants). Without it anyone on the domain can publish; the bridge says so at start.
+bool security_configured();
+
 // Owns one DDS entity handle; move-only.
 class Entity {
 public:

@@ -2,7 +2,7 @@
 // A point in time after which the design search stops (the spec's time_limit_s or
 // --time-limit). Unlimited by default. It may also watch a stop flag (Ctrl-C): once the flag
 // is set the deadline has passed, so the search stops as at a time limit and returns the
-// best design so far. A planner call already running finishes first (it sees only the time).
+// best design so far. A planner call already running sees the flag too (SearchLimits::stop).
 
 #include <algorithm>
 #include <atomic>
@@ -32,6 +32,7 @@ public:
     }
 
     bool limited() const { return at_.has_value(); }
+    const std::atomic<bool> *stop_flag() const { return stop_; } // null: none
     bool expired() const {
         return (stop_ && stop_->load(std::memory_order_relaxed)) ||
                (at_ && std::chrono::steady_clock::now() >= *at_);

@@ -1,5 +1,7 @@
 #include "design/evaluation_record.h"
 
+#include "design/numbers.h"
+
 #include <bit>
 #include <cstdint>
 
@@ -156,7 +158,7 @@ std::optional<TaskExplicability> decode_evaluation(const std::string &bytes) {
             return std::nullopt;
         e.optimal_actions = r.texts();
     }
-    if (!r.ok())
+    if (!r.ok() || evaluation_problem(e)) // values re-checked as the wire checks them
         return std::nullopt;
     return e;
 }
@@ -174,7 +176,7 @@ std::optional<double> decode_robot_bound(const std::string &bytes) {
     if (r.byte() != RECORD_VERSION || r.byte() != BOUND_TAG)
         return std::nullopt;
     double bound = r.real();
-    if (!r.ok())
+    if (!r.ok() || !valid_plan_cost(bound))
         return std::nullopt;
     return bound;
 }

@@ -45,8 +45,11 @@ std::optional<TaskExplicability> EvaluationStore::find(const Configuration &conf
         return it->second;
     if (!db_)
         return std::nullopt;
-    auto bytes = db_->get(record_name(RecordKind::EXPLICABILITY, scope_, configuration, task));
+    store::Digest name = record_name(RecordKind::EXPLICABILITY, scope_, configuration, task);
+    auto bytes = db_->get(name);
     auto evaluation = bytes ? decode_evaluation(*bytes) : std::nullopt;
+    if (bytes && !evaluation)
+        db_->reject(name); // unusable values: planned again, never used
     if (evaluation)
         entries_.emplace(std::make_pair(configuration, task), *evaluation);
     return evaluation;
@@ -74,8 +77,11 @@ std::optional<double> EvaluationStore::find_robot_bound(const Configuration &con
         return it->second;
     if (!db_)
         return std::nullopt;
-    auto bytes = db_->get(record_name(RecordKind::ROBOT_BOUND, scope_, configuration, task));
+    store::Digest name = record_name(RecordKind::ROBOT_BOUND, scope_, configuration, task);
+    auto bytes = db_->get(name);
     auto bound = bytes ? decode_robot_bound(*bytes) : std::nullopt;
+    if (bytes && !bound)
+        db_->reject(name);
     if (bound)
         robot_bounds_.emplace(std::make_pair(configuration, task), *bound);
     return bound;

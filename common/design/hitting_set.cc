@@ -14,6 +14,13 @@ namespace {
 
 double least_ie(const ObjectiveWeights &w) { return w.distance == Distance::COST_DIFF ? 0.0 : 1.0; }
 
+// Beyond this magnitude a coefficient, bound or cutoff is not given to CBC (it aborts near
+// 1e25, and its absolute tolerances lose meaning long before): the phase gives up instead,
+// and the search proves the optimum without it (numbers.h keeps every input far below).
+constexpr double SOLVER_MAGNITUDE = 1e15;
+
+bool solver_number(double v) { return std::abs(v) <= SOLVER_MAGNITUDE; } // false for NaN too
+
 // Owns a CBC model.
 struct ModelDeleter {
     void operator()(Cbc_Model *m) const { Cbc_deleteModel(m); }
@@ -74,6 +81,13 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
                                                  const Deadline &deadline) const {
     const ObjectiveWeights &w = problem_.weights;
     int n = static_cast<int>(problem_.modifications.size());
+    Answer answer;
+    if (!std::isfinite(constant_)) { // no design has a finite objective
+        if (std::isfinite(cutoff))
+            answer.status = Answer::NONE;
+        return answer;
+    }
+    bool in_range = solver_number(cutoff) || cutoff == INF;
     Model model(Cbc_newModel());
     Cbc_Model *m = model.get();
     Cbc_setLogLevel(m, 0);
@@ -85,9 +99,12 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
     Cbc_setAllowableFractionGap(m, 0.0);
     if (deadline.limited())
         Cbc_setMaximumSeconds(m, deadline.remaining_seconds());
+    auto add_column = [&](double objective) {
+        in_range = in_range && solver_number(objective);
+        Cbc_addCol(m, "", 0.0, 1.0, objective, 1, 0, nullptr, nullptr);
+    };
     for (int i = 0; i < n; ++i)
-        Cbc_addCol(m, "", 0.0, 1.0, w.beta * problem_.modifications[i].cost, 1, 0, nullptr,
-                   nullptr);
+        add_column(w.beta * problem_.modifications[i].cost);
     // A term above this makes a design worse than `cutoff` whatever the rest: capping the
     // savings there keeps the program's numbers small and changes no design below it.
     double cap = std::max(0.0, cutoff - constant_) + 1.0;
@@ -109,7 +126,7 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
             top = above;
             double saving = remaining - std::min(above, cap);
             remaining -= saving;
-            Cbc_addCol(m, "", 0.0, 1.0, -saving, 1, 0, nullptr, nullptr);
+            add_column(-saving);
             int y = col++;
             if (previous >= 0) { // y_j <= y_(j-1)
                 int both[2] = {y, previous};
@@ -146,11 +163,15 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
             cols.push_back(i);
         Cbc_addRow(m, "", n, cols.data(), coefs.data(), 'L', max_size_);
     }
+    in_range = in_range && solver_number(offset);
+    if (!in_range) {
+        answer.out_of_range = true;
+        return answer; // FAILED
+    }
     if (std::isfinite(cutoff)) // INF: a ranking not full yet, every design is wanted
         Cbc_setCutoff(m, cutoff - offset + margin(cutoff));
     Cbc_solve(m);
 
-    Answer answer;
     if (Cbc_isProvenInfeasible(m)) {
         answer.status = Answer::NONE;
         return answer;

@@ -56,7 +56,8 @@ public:
     struct Answer {
         enum Status { FOUND, NONE, FAILED } status = FAILED;
         Configuration design;
-        double bound = 0; // the least relaxed objective outside the cones
+        double bound = 0;          // the least relaxed objective outside the cones
+        bool out_of_range = false; // FAILED: numbers beyond what the solver takes exactly
     };
     // The design outside the cones with the least relaxed objective, if it is at most
     // `cutoff` (INF: any); NONE when every such design is above it.

@@ -71,6 +71,8 @@ CacheCounters PlanCache::counters() const {
 PlanOutcome PlanCache::run_planner(const ground::GroundTask &canonical, const Deadline &deadline) {
     auto start = std::chrono::steady_clock::now();
     planning::PlannerOptions options = options_;
+    if (deadline.stop_flag())
+        options.limits.stop = deadline.stop_flag();
     if (deadline.limited()) {
         double left = deadline.remaining_seconds();
         options.limits.time_limit_s =

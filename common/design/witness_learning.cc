@@ -190,8 +190,13 @@ bool DesignLearner::prove_by_hitting_sets() {
             lower_bound_ = best;
             return true;
         }
-        if (answer.status == HittingSetMaster::Answer::FAILED)
+        if (answer.status == HittingSetMaster::Answer::FAILED) {
+            if (answer.out_of_range)
+                result_.notes.push_back("the hitting-set phase was not used: the objective's "
+                                        "numbers exceed what its solver takes exactly "
+                                        "(docs/numbers.md); the search proved the design alone");
             return false;
+        }
         lower_bound_ = std::min(best, answer.bound);
         if (!evaluate(answer.design))
             return false;

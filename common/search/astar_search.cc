@@ -90,6 +90,8 @@ SearchStatus AStarSearch::finish(SearchStatus status) {
 }
 
 bool AStarSearch::limit_reached() const {
+    if (limits_.stop && limits_.stop->load(std::memory_order_relaxed))
+        return true;
     if (limits_.time_limit_s > 0) {
         double elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();

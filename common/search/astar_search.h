@@ -26,6 +26,7 @@
 #include "search/state_registry.h"
 #include "search/successor_generator.h"
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -43,6 +44,9 @@ struct SearchLimits {
     // tens of nanoseconds, an expansion with LM-cut microseconds to milliseconds), memory
     // every MEMORY_CHECK_INTERVAL steps.
     std::size_t memory_limit_bytes = 0;
+    // Set by another thread to stop the search as at a limit (a service shutting down);
+    // null: none. Checked before every step, like the time. Outlives the search.
+    const std::atomic<bool> *stop = nullptr;
 };
 
 struct SearchStatistics {

@@ -1,5 +1,6 @@
 #include "spec/design_spec.h"
 
+#include "design/numbers.h"
 #include "pddl/parser.h"
 #include "spec/spec_checks.h"
 
@@ -100,9 +101,8 @@ private:
             DesignTask task;
             task.name = t.name();
             task.probability = t.has_probability() ? t.probability() : 1.0;
-            if (!(task.probability >= 0) || !std::isfinite(task.probability))
-                fail(at + ".probability",
-                     "the probability of task '" + t.name() + "' must be a non-negative number");
+            if (auto why = design::number_problem(task.probability, design::TASK_WEIGHT))
+                fail(at + ".probability", "the probability of task '" + t.name() + "' " + *why);
             total += task.probability;
             SourceFile file = read(at + ".problem", t.problem());
             task.robot_problem = load_pddl(at + ".problem", [&] {
@@ -128,32 +128,32 @@ private:
 
     void load_weights() {
         ObjectiveWeights &w = problem_.weights;
-        auto weight = [&](bool has, double value, double fallback, const char *field) {
+        // Every number in its range (design/numbers.h), named where it is.
+        auto number = [&](bool has, double value, double fallback, const char *field,
+                          design::NumberRange range) {
             double v = has ? value : fallback;
-            if (!(v >= 0) || !std::isfinite(v))
-                fail(field, std::string(field) + " must be a non-negative number");
+            if (auto why = design::number_problem(v, range))
+                fail(field, std::string(field) + " " + *why);
             return v;
         };
-        w.alpha = weight(m_.has_alpha(), m_.alpha(), 1, "alpha");
-        w.beta = weight(m_.has_beta(), m_.beta(), 1, "beta");
-        w.kappa = weight(m_.has_kappa(), m_.kappa(), 1, "kappa");
-        w.gamma = weight(m_.has_gamma(), m_.gamma(), 1, "gamma");
-        if (w.gamma > 1)
-            fail("gamma", "gamma must be in [0, 1]");
-        w.horizon = m_.has_horizon() ? m_.horizon() : 1;
-        if (w.horizon < 1)
-            fail("horizon", "horizon must be at least 1");
+        auto weight = [&](bool has, double value, const char *field) {
+            return number(has, value, 1, field, design::WEIGHT);
+        };
+        w.alpha = weight(m_.has_alpha(), m_.alpha(), "alpha");
+        w.beta = weight(m_.has_beta(), m_.beta(), "beta");
+        w.kappa = weight(m_.has_kappa(), m_.kappa(), "kappa");
+        w.gamma = number(m_.has_gamma(), m_.gamma(), 1, "gamma", design::DISCOUNT);
+        w.horizon =
+            static_cast<int>(number(m_.has_horizon(), m_.horizon(), 1, "horizon", design::HORIZON));
         w.distance = m_.distance() == proto::DesignProblem::COST_DIFF ? Distance::COST_DIFF
                                                                       : Distance::EXP_COST_DIFF;
         w.behaviour = behaviour_from_proto(m_.robot_behaviour());
         w.explanation_cost =
-            weight(m_.has_explanation_cost(), m_.explanation_cost(), 1, "explanation_cost");
-        if (m_.max_design_size() < 0)
-            fail("max_design_size", "max_design_size must be >= 0");
-        problem_.max_design_size = m_.max_design_size();
-        if (!(m_.time_limit_s() >= 0))
-            fail("time_limit_s", "time_limit_s must be >= 0");
-        problem_.time_limit_s = m_.time_limit_s();
+            weight(m_.has_explanation_cost(), m_.explanation_cost(), "explanation_cost");
+        problem_.max_design_size = static_cast<int>(
+            number(true, m_.max_design_size(), 0, "max_design_size", design::DESIGN_SIZE));
+        problem_.time_limit_s =
+            number(true, m_.time_limit_s(), 0, "time_limit_s", design::TIME_LIMIT_S);
     }
 
     void load_modifications() {
@@ -165,8 +165,8 @@ private:
                 fail(at, "a modification needs a name");
             if (!names.insert(m.name()).second)
                 fail(at + ".name", "duplicate modification name '" + m.name() + "'");
-            if (!std::isfinite(m.cost()))
-                fail(at + ".cost", "the cost of modification '" + m.name() + "' is not finite");
+            if (auto why = design::number_problem(m.cost(), design::MODIFICATION_COST))
+                fail(at + ".cost", "the cost of modification '" + m.name() + "' " + *why);
             Modification modification{m.name(), m.cost(), {}};
             for (int j = 0; j < m.edit_size(); ++j)
                 modification.edits.push_back(

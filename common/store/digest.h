@@ -18,5 +18,6 @@ struct Digest {
 };
 
 Digest sha256(std::string_view data);
+Digest hmac_sha256(std::string_view secret, std::string_view data); // the store's record tags
 
 } // namespace envdesign::store

@@ -1,7 +1,9 @@
 #include "store/record_db.h"
 
+#include <openssl/crypto.h>
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstring>
@@ -34,6 +36,16 @@ std::string utc_stamp() {
     char buffer[32];
     std::strftime(buffer, sizeof buffer, "%Y%m%dT%H%M%SZ", &tm);
     return buffer;
+}
+
+constexpr std::size_t TAG_SIZE = sizeof(Digest::bytes);
+
+// HMAC-SHA256 with `secret`, or SHA-256 without one, over the record's name and value.
+Digest record_tag(const std::string *secret, const Digest &key, std::string_view value) {
+    std::string text = "envdesign record tag 2\n";
+    text.append(reinterpret_cast<const char *>(key.bytes.data()), key.bytes.size());
+    text += value;
+    return secret ? hmac_sha256(*secret, text) : sha256(text);
 }
 
 } // namespace
@@ -154,8 +166,9 @@ std::optional<std::string> RecordDb::problem() {
     }
     Statement version(db_, "PRAGMA user_version");
     version.step();
-    if (version.integer(0) != FORMAT_VERSION)
-        return "format version " + std::to_string(version.integer(0)) + ", this build keeps " +
+    std::int64_t format = version.integer(0);
+    if (format != FORMAT_VERSION && format != 1)
+        return "format version " + std::to_string(format) + ", this build keeps " +
                std::to_string(FORMAT_VERSION);
     if (schema != std::string(TABLE) + ";" + INDEX)
         return "an unexpected schema: " + schema;
@@ -166,7 +179,65 @@ std::optional<std::string> RecordDb::problem() {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (check.text(0) != "ok")
         return "integrity check failed: " + check.text(0);
+    if (format == 1)
+        tag_old_records();
     return std::nullopt;
+}
+
+// Format 1 stored values without tags: they were trusted then, and are tagged once now.
+void RecordDb::tag_old_records() {
+    exec("BEGIN IMMEDIATE");
+    try {
+        // The keys first: updating rows while a statement walks the table may revisit them.
+        std::vector<Digest> keys;
+        Statement all(db_, "SELECT key FROM records");
+        while (all.step()) {
+            std::string bytes = all.text(0);
+            Digest key;
+            if (bytes.size() != key.bytes.size())
+                continue; // unreadable by get(); evicted in time
+            std::copy(bytes.begin(), bytes.end(), key.bytes.begin());
+            keys.push_back(key);
+        }
+        Statement read(db_, "SELECT value FROM records WHERE key = ?1");
+        Statement update(db_, "UPDATE records SET value = ?2 WHERE key = ?1");
+        for (const Digest &key : keys) {
+            read.bind(1, key);
+            bool found = read.step();
+            std::string value = found ? tagged(key, read.text(0)) : std::string();
+            read.reset();
+            if (!found)
+                continue;
+            update.bind(1, key).bind(2, value);
+            update.step();
+            update.reset();
+        }
+        exec(("PRAGMA user_version=" + std::to_string(FORMAT_VERSION)).c_str());
+        exec("COMMIT");
+    } catch (...) {
+        sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+        throw;
+    }
+}
+
+std::string RecordDb::tagged(const Digest &key, const std::string &value) const {
+    const std::string *secret = options_.secrets.empty() ? nullptr : &options_.secrets.front();
+    Digest tag = record_tag(secret, key, value);
+    return value + std::string(reinterpret_cast<const char *>(tag.bytes.data()), TAG_SIZE);
+}
+
+bool RecordDb::verified(const Digest &key, const std::string &stored) const {
+    if (stored.size() < TAG_SIZE)
+        return false;
+    std::string_view value(stored.data(), stored.size() - TAG_SIZE);
+    auto matches = [&](const std::string *secret) {
+        Digest tag = record_tag(secret, key, value);
+        return CRYPTO_memcmp(tag.bytes.data(), stored.data() + value.size(), TAG_SIZE) == 0;
+    };
+    if (options_.secrets.empty())
+        return matches(nullptr);
+    return std::any_of(options_.secrets.begin(), options_.secrets.end(),
+                       [&](const std::string &secret) { return matches(&secret); });
 }
 
 void RecordDb::create_schema() {
@@ -206,6 +277,8 @@ void RecordDb::prepare() {
         db_, "INSERT INTO records (key, value, last_used) VALUES (?1, ?2, ?3) ON CONFLICT (key) "
              "DO NOTHING");
     touch_ = std::make_unique<Statement>(db_, "UPDATE records SET last_used = ?2 WHERE key = ?1");
+    erase_ = std::make_unique<Statement>(
+        db_, "DELETE FROM records WHERE key = ?1 RETURNING length(key) + length(value)");
     evict_ = std::make_unique<Statement>(
         db_, "DELETE FROM records WHERE key IN (SELECT key FROM records ORDER BY last_used "
              "LIMIT ?1) RETURNING length(key) + length(value)");
@@ -216,6 +289,7 @@ void RecordDb::close() {
     put_.reset();
     touch_.reset();
     evict_.reset();
+    erase_.reset();
     if (db_)
         sqlite3_close_v2(db_);
     db_ = nullptr;
@@ -237,7 +311,12 @@ std::optional<std::string> RecordDb::get(const Digest &key) {
     if (get_->step())
         value = get_->text(0);
     get_->reset();
+    if (value && !verified(key, *value)) {
+        erase(key);
+        return std::nullopt;
+    }
     if (value) {
+        value->resize(value->size() - TAG_SIZE);
         touched_[key] = ++clock_;
         if (touched_.size() >= 4096) { // bounds memory; rare
             exec("BEGIN IMMEDIATE");
@@ -253,12 +332,13 @@ void RecordDb::put(const Digest &key, const std::string &value) {
     exec("BEGIN IMMEDIATE");
     try {
         write_touches();
-        put_->bind(1, key).bind(2, value).bind(3, ++clock_);
+        std::string stored = tagged(key, value);
+        put_->bind(1, key).bind(2, stored).bind(3, ++clock_);
         put_->step();
         put_->reset();
         if (sqlite3_changes(db_) > 0) {
             ++records_;
-            bytes_ += key.bytes.size() + value.size();
+            bytes_ += key.bytes.size() + stored.size();
         }
         evict();
         exec("COMMIT");
@@ -266,6 +346,24 @@ void RecordDb::put(const Digest &key, const std::string &value) {
         sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
         throw;
     }
+}
+
+void RecordDb::reject(const Digest &key) {
+    std::lock_guard lock(mutex_);
+    erase(key);
+}
+
+// Under the lock: deletes a bad record at once (committed on its own), so that the next
+// put() of the same name can store a good value.
+void RecordDb::erase(const Digest &key) {
+    touched_.erase(key);
+    erase_->bind(1, key);
+    while (erase_->step()) {
+        --records_;
+        bytes_ -= std::min<std::size_t>(bytes_, erase_->integer(0));
+        ++rejected_;
+    }
+    erase_->reset();
 }
 
 void RecordDb::flush() {
@@ -320,6 +418,11 @@ std::size_t RecordDb::bytes() const {
 long long RecordDb::evicted() const {
     std::lock_guard lock(mutex_);
     return evicted_;
+}
+
+long long RecordDb::rejected() const {
+    std::lock_guard lock(mutex_);
+    return rejected_;
 }
 
 } // namespace envdesign::store

@@ -5,6 +5,7 @@
 #include "bus/status.h"
 #include "dds/arrival_topic.h"
 #include "pddl/parse_error.h"
+#include "service/number_flag.h"
 #include "service_main.h"
 #include "store/state_dir.h"
 
@@ -40,35 +41,53 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
                    "(half-life H arrivals)")
         ->capture_default_str();
     app.add_option("--threshold", drift.threshold, "TV distance that asks for a re-evaluation")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(service::number_in({0.0, 1.0}))
         ->capture_default_str();
     app.add_option("--rearm", drift.rearm_threshold, "TV below which the detector re-arms")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(service::number_in({0.0, 1.0}))
         ->capture_default_str();
     app.add_option("--min-samples", drift.min_samples, "evidence needed before a request")
         ->capture_default_str();
     app.add_option("--holdoff", drift.holdoff_arrivals, "arrivals between two requests")
         ->capture_default_str();
     app.add_option("--answer-timeout", drift.answer_timeout_s, "seconds to wait for a design")
+        ->check(service::number_in(service::POSITIVE_SECONDS))
         ->capture_default_str();
     app.add_option("--resend-after", c.coordinator.resend_after_s,
                    "coordinator: send a request again after this long without word of it (s)")
-        ->check(CLI::PositiveNumber)
+        ->check(service::number_in(service::POSITIVE_SECONDS))
         ->capture_default_str();
     app.add_option("--max-rate", intake.max_rate, "arrivals/s per site (0: no limit)")
+        ->check(service::number_in({0, 1e6}))
         ->capture_default_str();
     app.add_option("--burst", intake.burst, "burst allowed above --max-rate")
+        ->check(service::number_in({0, 1e6}))
         ->capture_default_str();
     app.add_option("--max-future", intake.max_future_s,
                    "seconds ahead beyond which a timestamp counts as clock skew")
+        ->check(service::number_in(design::TIME_LIMIT_S))
         ->capture_default_str();
     app.add_option("--max-age", intake.max_age_s, "seconds a timestamp may be behind or ahead")
+        ->check(service::number_in(design::TIME_LIMIT_S))
+        ->capture_default_str();
+    app.add_option("--max-new-tasks", c.tracker.max_new_tasks,
+                   "new tasks (arrivals carrying their problem) taken in per problem, in all")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    app.add_option("--new-task-interval", c.tracker.new_task_interval_s,
+                   "seconds per new task taken in per problem, beyond --new-task-burst")
+        ->check(service::number_in(design::TIME_LIMIT_S))
+        ->capture_default_str();
+    app.add_option("--new-task-burst", c.tracker.new_task_burst,
+                   "new tasks taken in at once per problem")
+        ->check(service::number_in({1, 1e5}))
         ->capture_default_str();
     app.add_option("--reweigh-interval", c.tracker.reweigh_interval_s,
                    "local: re-weigh stored evaluations at most this often (s; 0: never)")
+        ->check(service::number_in(design::TIME_LIMIT_S))
         ->capture_default_str();
     app.add_option("--publish-hz", c.publish_hz, "estimates per problem per second, at most")
-        ->check(CLI::PositiveNumber)
+        ->check(service::number_in({1e-3, 1e3}))
         ->capture_default_str();
     app.add_option("--reader-history", f.reader_history, "DDS reader depth per site")
         ->check(CLI::PositiveNumber)
@@ -81,7 +100,8 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
                    "keep evaluations in DIR/evaluations.db across restarts (--redesign local)")
         ->check(CLI::ExistingDirectory);
     app.add_option("--time-limit", c.local.time_limit_s,
-                   "seconds per re-evaluation (default: the spec's)");
+                   "seconds per re-evaluation (default: the spec's)")
+        ->check(service::number_in(design::TIME_LIMIT_S));
 }
 
 // Flags -> config; throws CLI::ValidationError for a bad --problem or --estimator.
@@ -134,6 +154,13 @@ int main(int argc, char **argv) {
         return *code;
     return services::serve("bridge", common, [&](services::Service &service) {
         config.instance = service.instance;
+        if (!dds::security_configured())
+            service.log->warn(
+                "request - | DDS Security is off (CYCLONEDDS_URI configures no <Security>): "
+                "anyone on DDS domain {} can publish arrivals and new tasks (taken in: at most "
+                "{} per problem, {} at once, then one per {} s); see deploy/LAN.md",
+                flags.domain, config.tracker.max_new_tasks, config.tracker.new_task_burst,
+                config.tracker.new_task_interval_s);
         if (config.mode == bridge::Mode::LOCAL) {
             store::RecordDbOptions options;
             options.sync = false; // survives a killed bridge; --state-fsync is the coordinator's

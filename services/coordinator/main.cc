@@ -1,6 +1,7 @@
 // envdesign-coordinator: the design search as a service (README.md).
 
 #include "cluster/coordinator.h"
+#include "service/number_flag.h"
 #include "service_main.h"
 
 #include <envdesign/version.h>
@@ -25,20 +26,20 @@ int main(int argc, char **argv) {
         ->capture_default_str();
     app.add_option("--max-spec-bytes", config.max_spec_bytes,
                    "largest spec (text and files) a request may carry")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30))
+        ->check(CLI::Range(std::size_t{1}, cluster::MAX_SPEC_BYTES_LIMIT))
         ->capture_default_str();
     app.add_option("--planner-timeout", config.pool.planner_timeout_s,
                    "seconds of silence after which a planner is gone")
-        ->check(CLI::PositiveNumber)
+        ->check(service::number_in(service::POSITIVE_SECONDS))
         ->capture_default_str();
     app.add_option("--lost-after", config.pool.lost_after_s,
                    "seconds after which a job its planner does not list is sent again")
-        ->check(CLI::PositiveNumber)
+        ->check(service::number_in(service::POSITIVE_SECONDS))
         ->capture_default_str();
     app.add_option("--job-deadline", config.pool.job_deadline_s,
                    "least seconds a planner may hold a job before it goes to another (grows to "
                    "4x the slowest answer); planners that miss deadlines are demoted")
-        ->check(CLI::PositiveNumber)
+        ->check(service::number_in(service::POSITIVE_SECONDS))
         ->capture_default_str();
     app.add_option("--jobs-per-slot", config.pool.jobs_per_slot,
                    "jobs in flight per planner worker")
@@ -64,17 +65,25 @@ int main(int argc, char **argv) {
     app.add_option("--discovery", config.election.discovery_s,
                    "seconds after start spent listening for other coordinators before "
                    "running requests")
-        ->check(CLI::Range(0.0, 60.0))
+        ->check(service::number_in({0.0, 60.0}))
         ->capture_default_str();
     app.add_option("--takeover-after", config.election.takeover_after_s,
                    "standby: seconds of silence from the active coordinator before taking over")
-        ->check(CLI::Range(1.5, 3600.0))
+        ->check(service::number_in({1.5, 3600.0}))
+        ->capture_default_str();
+    app.add_option("--max-time-limit", config.max_time_limit_s,
+                   "seconds any request may search at most, its own limit when smaller (a "
+                   "request without a limit gets this one)")
+        ->check(service::number_in({1, design::TIME_LIMIT_S.high}))
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))
         return *code;
     config.state_max_bytes = state_max_mb << 20;
     return services::serve("coordinator", common, [&](services::Service &service) {
         config.instance = service.instance;
+        if (service.keys) // the stored records are tagged with the bus keys
+            for (const bus::Key &key : service.keys->keys)
+                config.state_secrets.push_back(key.secret);
         cluster::Coordinator coordinator(*service.bus, config);
         return services::run_until_signal(service,
                                           std::function<int()>([&] { return coordinator.tick(); }));

@@ -1,6 +1,7 @@
 // envdesign-planner: evaluates candidate designs for coordinators (README.md).
 
 #include "cluster/planner.h"
+#include "service/number_flag.h"
 #include "service_main.h"
 
 #include <envdesign/version.h>
@@ -16,7 +17,7 @@ int main(int argc, char **argv) {
         ->check(CLI::Range(1, 256))
         ->capture_default_str();
     app.add_option("--heartbeat", config.heartbeat_period_s, "seconds between heartbeats")
-        ->check(CLI::PositiveNumber)
+        ->check(service::number_in(service::POSITIVE_SECONDS))
         ->capture_default_str();
     app.add_option("--max-specs", config.max_specs, "specs kept loaded")
         ->check(CLI::Range(1, 1000))
@@ -27,15 +28,22 @@ int main(int argc, char **argv) {
         ->capture_default_str();
     app.add_option("--max-spec-bytes", config.spec_limits.max_spec_bytes,
                    "largest spec encoding taken from the bus (chunks of larger ones are dropped)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30))
+        ->check(CLI::Range(std::size_t{1}, cluster::MAX_SPEC_BYTES_LIMIT))
+        ->capture_default_str();
+    std::size_t job_memory_mb = config.job_memory_bytes >> 20;
+    app.add_option("--job-memory-mb", job_memory_mb,
+                   "search memory one job may use, in MiB (beyond it the job is answered as "
+                   "out of limits); the planner stays near --workers x this")
+        ->check(CLI::Range(16, 1 << 20))
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))
         return *code;
+    config.job_memory_bytes = job_memory_mb << 20;
     return services::serve("planner", common, [&](services::Service &service) {
         config.instance = service.instance;
         cluster::Planner planner(*service.bus, config);
         int code = services::run_until_signal(service, [&] { planner.tick(); });
-        planner.stop(); // coordinators move its jobs at once; running ones still finish
+        planner.stop(); // coordinators move its jobs at once; running searches stop
         return code;
     });
 }

@@ -161,5 +161,32 @@ TEST(Tracker, NewTaskWhilePendingGoesOutAfterTheAnswer) {
     EXPECT_EQ(next->new_tasks[0].name, "c");
 }
 
+// Issue 21: 2000 made-up new tasks took the bridge to 50 s of full CPU and a design over
+// tasks that do not exist. New tasks are taken in at most `burst` at once, then one per
+// interval, and max_new_tasks in all; the rest count as unknown and may come again.
+TEST(Tracker, NewTasksAreTakenInAtABoundedRateAndCount) {
+    TrackerConfig c = config();
+    c.new_task_burst = 3;
+    c.new_task_interval_s = 10;
+    c.max_new_tasks = 5;
+    ArrivalTracker tracker(c);
+    tracker.add_problem("p", {{"a", 1}});
+    int64_t sequence = 0;
+    auto send = [&](const std::string &task, double now) {
+        return tracker.receive({"p", "s", task, ++sequence, NOW_UTIME, "(define ...)", ""}, now,
+                               NOW_UTIME);
+    };
+    int taken = 0;
+    for (int i = 0; i < 2000; ++i)
+        taken += send("made-up-" + std::to_string(i), 0).use == Use::NEW_TASK;
+    EXPECT_EQ(taken, 3);
+    EXPECT_EQ(tracker.status("p")->new_tasks_held_back, 1997);
+    EXPECT_EQ(send("late", 5).use, Use::UNKNOWN_TASK) << "half an interval later";
+    EXPECT_EQ(send("later", 10).use, Use::NEW_TASK) << "one token back";
+    EXPECT_EQ(send("much-later", 1000).use, Use::NEW_TASK);
+    EXPECT_EQ(send("beyond-the-count", 2000).use, Use::UNKNOWN_TASK) << "5 in all";
+    EXPECT_EQ(tracker.status("p")->new_tasks, 5);
+}
+
 } // namespace
 } // namespace envdesign::arrivals

@@ -54,6 +54,7 @@ TEST(DdsSecurity, OnlyPublishersWithACertificateReachTheBridge) {
     std::this_thread::sleep_for(300ms);
     EXPECT_EQ(lcm.last_estimate("restaurant")->received, 150) << "only the member's arrivals";
     EXPECT_TRUE(bridge.running());
+    EXPECT_EQ(bridge.output().find("DDS Security is off"), std::string::npos) << bridge.output();
 }
 
 } // namespace

@@ -80,6 +80,8 @@ TEST(NewTask, AddedAndEvaluatedLocally) {
     auto bridge = start_bridge(dir, 66, 7766);
     run_new_task(dir, lcm, *bridge, 66);
     EXPECT_NE(bridge->output().find("refused"), std::string::npos);
+    // Issue 21: without DDS Security, anyone on the domain publishes; the bridge says so.
+    EXPECT_NE(bridge->output().find("DDS Security is off"), std::string::npos) << bridge->output();
     EXPECT_EQ(bridge->stop(), 0);
 }
 

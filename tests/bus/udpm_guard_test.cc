@@ -115,7 +115,7 @@ TEST(UdpmGuard, ABusDropsTheWrappingFragmentAndTakesGenuineOnes) {
     std::vector<int> sockets = udpm_receive_sockets(PORT);
     ASSERT_FALSE(sockets.empty());
     for (int fd : sockets)
-        EXPECT_EQ(socket_filter_length(fd), 6);
+        EXPECT_EQ(socket_filter_length(fd), 8);
     Sender sender;
     sender.forged(1);
     std::string message(1000, 'g');
@@ -125,6 +125,39 @@ TEST(UdpmGuard, ABusDropsTheWrappingFragmentAndTakesGenuineOnes) {
         bus.handle(std::chrono::milliseconds(50));
     drain(bus);
     EXPECT_EQ(heard, std::vector<std::string>{message});
+}
+
+// Issue 21: fragments of a 250 MB message (unsigned) made LCM allocate and reassemble it
+// before any check of ours. The filter on a UDP socket of the port: a fragment of a message
+// beyond BUS_MAX_MESSAGE never arrives, one of a message within it does.
+TEST(UdpmGuard, FragmentsOfAMessageBeyondTheBusLimitAreDropped) {
+    std::uint16_t port = static_cast<std::uint16_t>(PORT + 1);
+    int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in any{};
+    any.sin_family = AF_INET;
+    any.sin_port = htons(port);
+    any.sin_addr.s_addr = htonl(INADDR_ANY);
+    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr *>(&any), sizeof any), 0);
+    ASSERT_EQ(guard_udpm_fragments(port), 1);
+    timeval wait{0, 300'000};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
+    int out = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in to = any;
+    to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    auto delivered = [&](std::uint32_t message_size) {
+        std::uint32_t words[4] = {htonl(0x4c433033), htonl(9), htonl(message_size), htonl(0)};
+        std::string d(reinterpret_cast<const char *>(words), 16);
+        d += std::string(4, '\0') + CHANNEL + std::string(1, '\0') + std::string(600, 'h');
+        ::sendto(out, d.data(), d.size(), 0, reinterpret_cast<sockaddr *>(&to), sizeof to);
+        char buffer[2048];
+        return ::recv(fd, buffer, sizeof buffer, 0) > 0;
+    };
+    EXPECT_FALSE(delivered(250u << 20));
+    EXPECT_FALSE(delivered(BUS_MAX_MESSAGE + 1));
+    EXPECT_TRUE(delivered(BUS_MAX_MESSAGE));
+    EXPECT_TRUE(delivered(1000));
+    ::close(out);
+    ::close(fd);
 }
 
 } // namespace

@@ -105,12 +105,48 @@ TEST(Election, OfThreeTheSecondTakesOverAndTheThirdStaysStandby) {
 TEST(Election, ItsOwnStatusAndOtherKindsDoNotCount) {
     Clock::time_point t{};
     Election e("b", T0 + 10, {0, 3}, t);
-    e.heard(status("b", T0), t);            // its own, looped back
+    e.heard(status("b", T0 + 10), t);       // its own, looped back
     e.heard(status("p", T0, "planner"), t); // a planner that started earlier
     e.heard(status("x", T0, "bridge"), t);  // a bridge
     e.heard(status("", T0), t);             // no name
     EXPECT_FALSE(e.update(t + 10ms));
     EXPECT_EQ(e.role(), Role::ACTIVE);
+}
+
+// Issue 21: two coordinators started with the same --name on one bus both took themselves
+// for the only one and both answered every request. A status with this one's name but
+// another start (or sender id) is another coordinator: the later stands by and says why.
+TEST(Election, AnotherCoordinatorWithTheSameNameIsAPeer) {
+    Clock::time_point t{};
+    Election later("coordinator", T0 + 5, {0, 3}, t, 7);
+    Election earlier("coordinator", T0, {0, 3}, t, 9);
+    later.heard(status("coordinator", T0 + 5), t, 7); // its own status: ignored
+    EXPECT_FALSE(later.update(t + 100ms));
+    EXPECT_EQ(later.role(), Role::ACTIVE);
+    later.heard(status("coordinator", T0), t + 200ms, 9);
+    earlier.heard(status("coordinator", T0 + 5), t + 200ms, 7);
+    auto change = later.update(t + 300ms);
+    ASSERT_TRUE(change);
+    EXPECT_EQ(*change, "standing by: another coordinator named coordinator started earlier and "
+                       "is active on this bus; give each coordinator its own --name");
+    EXPECT_EQ(later.role(), Role::STANDBY);
+    EXPECT_FALSE(earlier.update(t + 300ms));
+    EXPECT_EQ(earlier.role(), Role::ACTIVE);
+}
+
+// Started at the same microsecond: the signed sender id decides (bus keys), not the name a
+// status claims; both sides agree.
+TEST(Election, TiesGoToTheLowerSignedSenderId) {
+    Clock::time_point t{};
+    Election a("a", T0, {0, 3}, t, 50);
+    Election z("z", T0, {0, 3}, t, 40);
+    a.heard(status("z", T0), t, 40);
+    z.heard(status("a", T0), t, 50);
+    a.update(t + 100ms);
+    z.update(t + 100ms);
+    EXPECT_EQ(a.role(), Role::STANDBY);
+    EXPECT_EQ(a.active(), "z");
+    EXPECT_EQ(z.role(), Role::ACTIVE);
 }
 
 } // namespace

@@ -222,5 +222,66 @@ TEST(PlannerPool, LateAnswersCountAndStretchTheDeadline) {
     EXPECT_EQ(pool.submit(1, job(2), now + 2s).size(), 1u) << "its slot is free again";
 }
 
+envdesign::planner_heartbeat_t working(const std::string &name, int capacity,
+                                       std::vector<std::int64_t> jobs, double busy_seconds) {
+    auto b = beat(name, capacity, std::move(jobs));
+    b.busy_seconds = busy_seconds;
+    return b;
+}
+
+// Issue 21: forty requests that never end held every slot. A request with a job waiting and
+// no slot gets one: the youngest job past its quantum of the request holding the most is
+// withdrawn; its slot frees when its planner lets go of it.
+TEST(PlannerPool, ARequestHoldingNoSlotGetsOneByAWithdrawal) {
+    PoolConfig config{10.0, 0.3, 1};
+    config.job_deadline_s = 100;
+    PlannerPool pool(config);
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    ASSERT_EQ(pool.submit(1, job(1), now).size(), 1u);
+    EXPECT_TRUE(pool.submit(2, job(2), now + 1s).empty()) << "within job 1's quantum";
+    EXPECT_TRUE(pool.take_withdrawals().empty());
+    EXPECT_TRUE(pool.heartbeat(working("a", 1, {1}, 3), now + 3s).empty());
+    auto withdrawn = pool.take_withdrawals();
+    ASSERT_EQ(withdrawn.size(), 1u);
+    EXPECT_EQ(withdrawn[0].job_id, 1);
+    EXPECT_EQ(withdrawn[0].planner, "a");
+    EXPECT_EQ(pool.counters().withdrawn, 1);
+    EXPECT_TRUE(pool.heartbeat(working("a", 1, {1}, 3.1), now + 3100ms).empty())
+        << "still listed: the slot is not free yet";
+    auto sent = pool.heartbeat(working("a", 1, {}, 3.2), now + 3200ms);
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0].job_id, 2) << "the request that had none goes first";
+    std::vector<envdesign::job_t> next;
+    ASSERT_TRUE(pool.answer(2, "a", next, now + 3300ms));
+    ASSERT_EQ(next.size(), 1u);
+    EXPECT_EQ(next[0].job_id, 1) << "then the withdrawn job again";
+    EXPECT_TRUE(pool.take_withdrawals().empty());
+}
+
+// A planner whose heartbeats show it working keeps a job past the job deadline: a long
+// search is not run twice at once. Past the job's own time limit it is taken.
+TEST(PlannerPool, AWorkingPlannerKeepsItsJobUntilItsTimeLimit) {
+    PoolConfig config{100.0, 0.3, 1};
+    config.job_deadline_s = 1.0;
+    PlannerPool pool(config);
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.heartbeat(beat("b", 1), now);
+    envdesign::job_t long_job = job(1);
+    long_job.time_limit_s = 10;
+    std::string holder = pool.submit(1, long_job, now)[0].planner;
+    std::string other = holder == "a" ? "b" : "a";
+    for (int s = 1; s <= 12; ++s) {
+        auto at = now + std::chrono::seconds(s);
+        pool.heartbeat(working(holder, 1, {1}, s), at);
+        pool.heartbeat(beat(other, 1), at);
+        EXPECT_TRUE(pool.expire(at).empty()) << "at " << s << " s";
+    }
+    auto moved = pool.expire(now + 12500ms);
+    ASSERT_EQ(moved.size(), 1u) << "past its 10 s limit and the 2 s grace";
+    EXPECT_EQ(moved[0].planner, other);
+}
+
 } // namespace
 } // namespace envdesign::cluster

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <atomic>
 #include <fstream>
+#include <limits>
 #include <mutex>
 #include <sys/stat.h>
 
@@ -378,6 +379,68 @@ void fake_planner_test(const std::string &key_file) {
 TEST(Attack, APlannerThatNeverAnswersLosesItsJobsWithoutAKey) { fake_planner_test(""); }
 
 TEST(Attack, APlannerThatNeverAnswersCannotJoinWithAKey) { fake_planner_test(cluster_key()); }
+
+// Answers every robot-bound job in the planner's name with `bound` (issue 21: 1e308 and inf
+// passed the wire check, and CBC aborted the coordinator; stored, at every start again).
+void forge_robot_bounds(Rogue &rogue, double bound) {
+    rogue.on<envdesign::job_t>(bus::JOB,
+                               [&rogue, bound](const envdesign::job_t &job, const std::string &) {
+                                   if (job.kind != envdesign::job_t::KIND_ROBOT_BOUND)
+                                       return;
+                                   envdesign::evaluation_t e{};
+                                   e.utime = bus::now_utime();
+                                   e.request_id = job.request_id;
+                                   e.sender = job.planner;
+                                   e.coordinator = job.sender;
+                                   e.job_id = job.job_id;
+                                   e.kind = job.kind;
+                                   e.status = envdesign::evaluation_t::STATUS_SOLVED;
+                                   e.has_robot_bound = true;
+                                   e.robot_bound = bound;
+                                   rogue.mouth().publish(bus::EVALUATION, e);
+                               });
+    rogue.start();
+}
+
+std::vector<std::string> state_dir_flags(const std::string &name) {
+    auto dir = std::filesystem::temp_directory_path() /
+               ("envdesign-poison-" + std::to_string(getpid()) + "-" + name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return {"--state-dir", dir.string()};
+}
+
+// 1e308 is no plan cost: refused at the wire, so the design is the undisturbed one.
+TEST(Poison, AHugeRobotBoundIsRefusedAndTheCoordinatorLives) {
+    LocalCluster cluster(1, state_dir_flags("huge"));
+    {
+        Rogue rogue(cluster.url());
+        forge_robot_bounds(rogue, 1e308);
+        expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    }
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
+    EXPECT_TRUE(logged(cluster.coordinator(), "the robot bound is not a cost")) << cluster.logs();
+    cluster.restart_coordinator(SIGTERM);
+    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
+}
+
+// inf means "no plan": taken from a planner's name on a bus without keys (what keys are
+// for), but neither then nor after a restart on the stored value may it stop the service.
+TEST(Poison, AnInfiniteRobotBoundNeverAbortsTheCoordinatorNorItsRestarts) {
+    LocalCluster cluster(1, state_dir_flags("inf"));
+    {
+        Rogue rogue(cluster.url());
+        forge_robot_bounds(rogue, std::numeric_limits<double>::infinity());
+        client::Result forged = design(cluster, RESTAURANT);
+        EXPECT_EQ(forged.exit_code, 0) << forged.error << cluster.logs();
+    }
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
+    cluster.restart_coordinator(SIGTERM);
+    client::Result after = design(cluster, RESTAURANT);
+    EXPECT_EQ(after.exit_code, 0) << after.error << cluster.logs();
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
+}
 
 TEST(Attack, AKeyFileOthersCanReadIsRefused) {
     std::string key = cluster_key();

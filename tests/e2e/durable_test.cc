@@ -5,6 +5,8 @@
 
 #include "local_cluster.h"
 
+#include <sqlite3.h>
+
 namespace envdesign::e2e {
 namespace {
 
@@ -104,6 +106,58 @@ TEST_F(DurableTest, AStateFileThatIsNotAStoreIsSetAsideAtStart) {
         set_aside += entry.path().filename().string().starts_with("evaluations.db.corrupt-");
     EXPECT_EQ(set_aside, 1);
 }
+
+// Rows changed in place, `sql` run on the closed file; returns the rows changed.
+long long edit_store(const fs::path &file, const std::string &sql) {
+    sqlite3 *db = nullptr;
+    long long changed = -1;
+    if (sqlite3_open_v2(file.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK &&
+        sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK)
+        changed = sqlite3_changes(db);
+    sqlite3_close(db);
+    return changed;
+}
+
+// Issue 21: values changed inside evaluations.db (the file still passes SQLite's integrity
+// check) gave wrong designs marked optimal (a NaN or 0 IE) or aborted every start (a bound
+// of 1e308). Now every record carries a tag over its bytes and its values are checked when
+// read: a changed record is deleted, counted, and planned again.
+// A record's value: version, kind ('E' evaluation, 'B' bound), then for 'E' the status and
+// the IE as 8 little-endian bytes, for 'B' the bound.
+class StoreEdits : public DurableTest, public ::testing::WithParamInterface<const char *> {};
+
+TEST_P(StoreEdits, AreDroppedAndCountedNeverUsed) {
+    const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
+    fs::path state = dir / "killed";
+    LocalCluster cluster(1, {"--state-dir", state.string()});
+    nlohmann::json want = CliRun(cluster.url(), source(RESTAURANT), dir, "first").result();
+    ASSERT_EQ(want.at("status"), "optimal");
+    const std::string ie = GetParam();
+    long long evaluations = -1, bounds = -1;
+    cluster.restart_coordinator(SIGTERM, [&] {
+        evaluations = edit_store(state / "evaluations.db",
+                                 "UPDATE records SET value = CAST(substr(value, 1, 3) || X'" + ie +
+                                     "' || substr(value, 12) AS BLOB) WHERE "
+                                     "hex(substr(value, 2, 1)) = '45'"); // 'E'
+        bounds = edit_store(state / "evaluations.db",
+                            "UPDATE records SET value = CAST(substr(value, 1, 2) || "
+                            "X'A0C8EB85F3CCE17F' || substr(value, 11) AS BLOB) WHERE "
+                            "hex(substr(value, 2, 1)) = '42'"); // 'B', set to 1e308
+    });
+    ASSERT_GT(evaluations, 0);
+    ASSERT_GE(bounds, 0); // the SQL ran; a store without bound records changes none
+    nlohmann::json repeat = CliRun(cluster.url(), source(RESTAURANT), dir, "after").result();
+    expect_same_design(repeat, want);
+    EXPECT_GT(repeat.at("cluster").at("jobs_sent"), 0); // planned again, not read
+    EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
+    EXPECT_NE(cluster.logs().find("failed their check (tag or values) and were deleted"),
+              std::string::npos)
+        << cluster.logs();
+}
+
+INSTANTIATE_TEST_SUITE_P(Issue21, StoreEdits,
+                         ::testing::Values("000000000000F87F",   // NaN
+                                           "0000000000000000")); // 0
 
 } // namespace
 } // namespace envdesign::e2e

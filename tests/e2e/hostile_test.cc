@@ -24,21 +24,6 @@ namespace {
 
 const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
 
-// Resident memory of process `pid` in KiB (/proc/PID/status, VmRSS).
-long resident_kib(pid_t pid) {
-    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
-    std::string key;
-    long value = -1;
-    while (status >> key) {
-        if (key == "VmRSS:") {
-            status >> value;
-            break;
-        }
-        status.ignore(1 << 20, '\n');
-    }
-    return value;
-}
-
 client::Result design(const LocalCluster &cluster) {
     client::Options options;
     options.give_up_after_s = 10;

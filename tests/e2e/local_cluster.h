@@ -50,6 +50,21 @@ inline bool wait_for_output(Process &p, const std::string &line, double timeout_
     return false;
 }
 
+// Resident memory of process `pid` in KiB (/proc/PID/status, VmRSS).
+inline long resident_kib(pid_t pid) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    std::string key;
+    long value = -1;
+    while (status >> key) {
+        if (key == "VmRSS:") {
+            status >> value;
+            break;
+        }
+        status.ignore(1 << 20, '\n');
+    }
+    return value;
+}
+
 // Hears heartbeats, to know which planners the coordinator can see.
 class HeartbeatWatcher {
 public:

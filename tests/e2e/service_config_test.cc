@@ -137,5 +137,32 @@ TEST_F(ServiceConfig, WithoutNotifySocketTheServiceRunsAsBefore) {
     EXPECT_EQ(process.wait(), 0) << process.output();
 }
 
+// Issue 21: a bad value in the file exited 2 without its line; NaN durations passed;
+// `version = true` made a service print its version and exit 0; --check-config passed with a
+// key file that does not exist and a URL start-up refuses.
+TEST_F(ServiceConfig, BadValuesNameTheirLineAndCheckConfigCatchesWhatStartUpWould) {
+    std::string nan = write("nan.conf", "log-level = info\nplanner-timeout = nan\n");
+    Outcome r = check("envdesign-coordinator", nan);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find(nan + ":2:1: error: --planner-timeout"), std::string::npos) << r.output;
+    std::string inf = write("inf.conf", "heartbeat = inf\n");
+    r = check("envdesign-planner", inf);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find(inf + ":1:1: error: --heartbeat"), std::string::npos) << r.output;
+    std::string version = write("version.conf", "version = true\n");
+    r = check("envdesign-coordinator", version);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find(version + ":1:1: error: unknown setting 'version'"), std::string::npos)
+        << r.output;
+    std::string key = write("key.conf", "key-file = " + (dir / "absent.key").string() + "\n");
+    r = check("envdesign-planner", key);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find("--key-file"), std::string::npos) << r.output;
+    std::string url = write("url.conf", "lcm-url = udpm://300.1.2.3:7667\n");
+    r = check("envdesign-coordinator", url);
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.output.find("--lcm-url"), std::string::npos) << r.output;
+}
+
 } // namespace
 } // namespace envdesign::e2e

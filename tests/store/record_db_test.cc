@@ -151,6 +151,84 @@ TEST_F(RecordDbTest, AnAlteredSchemaIsSetAside) {
     EXPECT_FALSE(db.get(key(1)));
 }
 
+// Issue 21: a value changed inside the file (which still passes SQLite's integrity check)
+// was used as it was. Its tag no longer matches: deleted, counted, never returned; the
+// name can be written again.
+TEST_F(RecordDbTest, AChangedValueIsRejectedCountedAndCanBeWrittenAgain) {
+    fill(5);
+    sql("UPDATE records SET value = CAST('V' AS BLOB) || substr(value, 2) WHERE "
+        "hex(substr(value, 1, 7)) = hex('value 1')");
+    RecordDb db(path, {});
+    EXPECT_EQ(db.records(), 5u);
+    EXPECT_FALSE(db.get(key(1)));
+    EXPECT_EQ(db.rejected(), 1);
+    EXPECT_EQ(db.records(), 4u);
+    EXPECT_EQ(db.get(key(2)), value(2));
+    db.put(key(1), value(1));
+    EXPECT_EQ(db.get(key(1)), value(1));
+    EXPECT_EQ(db.rejected(), 1);
+}
+
+TEST_F(RecordDbTest, ARecordMovedToAnotherNameIsRejected) {
+    fill(2);
+    // The value (and its tag) of record 0 copied over record 1's: the tag covers the name.
+    sql("UPDATE records SET value = (SELECT value FROM records WHERE hex(substr(value, 1, 7)) = "
+        "hex('value 0')) WHERE hex(substr(value, 1, 7)) = hex('value 1')");
+    RecordDb db(path, {});
+    EXPECT_EQ(db.get(key(0)), value(0));
+    EXPECT_FALSE(db.get(key(1)));
+    EXPECT_EQ(db.rejected(), 1);
+}
+
+TEST_F(RecordDbTest, KeyedTagsVerifyWithAnyKeyOfTheRingAndNotWithoutOne) {
+    RecordDbOptions old_key;
+    old_key.secrets = {"old secret"};
+    {
+        RecordDb db(path, old_key);
+        db.put(key(1), value(1));
+        db.put(key(2), value(2));
+    }
+    RecordDbOptions rotated; // a new key signs, the old one still verifies
+    rotated.secrets = {"new secret", "old secret"};
+    {
+        RecordDb db(path, rotated);
+        EXPECT_EQ(db.get(key(1)), value(1));
+        db.put(key(3), value(3));
+    }
+    RecordDbOptions unkeyed; // the checksum is not the MAC: a writer without the key fails
+    RecordDb db(path, unkeyed);
+    EXPECT_FALSE(db.get(key(2)));
+    EXPECT_FALSE(db.get(key(3)));
+    EXPECT_EQ(db.rejected(), 2);
+}
+
+// Format 1 kept values without tags; its records are tagged at open, not lost.
+TEST_F(RecordDbTest, AFormatOneFileIsTaggedAtOpen) {
+    { RecordDb db(path, {}); }
+    sql("PRAGMA user_version = 1");
+    sqlite3 *raw = nullptr;
+    ASSERT_EQ(sqlite3_open(path.c_str(), &raw), SQLITE_OK);
+    sqlite3_stmt *insert = nullptr;
+    ASSERT_EQ(
+        sqlite3_prepare_v2(raw, "INSERT INTO records VALUES (?1, ?2, 1)", -1, &insert, nullptr),
+        SQLITE_OK);
+    Digest k = key(7);
+    std::string v = value(7);
+    sqlite3_bind_blob(insert, 1, k.bytes.data(), static_cast<int>(k.bytes.size()), SQLITE_STATIC);
+    sqlite3_bind_blob(insert, 2, v.data(), static_cast<int>(v.size()), SQLITE_STATIC);
+    ASSERT_EQ(sqlite3_step(insert), SQLITE_DONE);
+    sqlite3_finalize(insert);
+    sqlite3_close(raw);
+    {
+        RecordDb db(path, {});
+        EXPECT_TRUE(db.report().set_aside.empty()) << db.report().reason;
+        EXPECT_EQ(db.get(key(7)), value(7));
+    }
+    RecordDb again(path, {});
+    EXPECT_EQ(again.get(key(7)), value(7));
+    EXPECT_EQ(again.rejected(), 0);
+}
+
 TEST_F(RecordDbTest, EvictsTheLeastRecentlyUsedPastTheBound) {
     RecordDbOptions options;
     options.max_records = 20;
@@ -175,7 +253,7 @@ TEST_F(RecordDbTest, EvictsTheLeastRecentlyUsedPastTheBound) {
 TEST_F(RecordDbTest, EvictsPastTheByteBound) {
     RecordDbOptions options;
     options.sync = false;
-    options.max_bytes = 50 * (32 + value(0).size());
+    options.max_bytes = 50 * (32 + value(0).size() + 32); // key, value, tag
     RecordDb db(path, options);
     for (int i = 0; i < 200; ++i)
         db.put(key(i), value(i));

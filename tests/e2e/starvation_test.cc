@@ -1,0 +1,239 @@
+// Work is bounded per request (issue 21, real processes): a job that never ends (blind search
+// on a state space of 2^30 states) is stopped by its memory limit and by the coordinator's
+// cap on time limits, is never run twice at once while its planner works on it, and a
+// SIGTERM stops the planner within a second; a request with a 30 KB client name is refused
+// and nothing of it kept.
+
+#include "local_cluster.h"
+
+#include "bus/codec.h"
+#include "bus/log.h"
+#include "envdesign/design_request_t.hpp"
+#include "envdesign/design_result_t.hpp"
+#include "spec/spec_bundle.h"
+
+#include <envdesign/client/client.h>
+
+#include <atomic>
+#include <fstream>
+#include <iostream>
+
+namespace envdesign::e2e {
+namespace {
+
+namespace fs = std::filesystem;
+
+// 30 switches to turn on: LM-cut sees the 30 steps at once, blind search visits every state
+// below 30 (about 10^9): it ends only at a limit.
+std::string write_switches_spec(const fs::path &dir) {
+    fs::create_directories(dir);
+    std::ofstream(dir / "domain.pddl") << R"((define (domain switches)
+  (:requirements :strips)
+  (:predicates (off ?s) (on ?s))
+  (:action flip :parameters (?s) :precondition (off ?s) :effect (and (on ?s) (not (off ?s)))))
+)";
+    std::ofstream problem(dir / "all-on.pddl");
+    problem << "(define (problem all-on) (:domain switches) (:objects";
+    for (int i = 0; i < 30; ++i)
+        problem << " s" << i;
+    problem << ") (:init";
+    for (int i = 0; i < 30; ++i)
+        problem << " (off s" << i << ")";
+    problem << ") (:goal (and";
+    for (int i = 0; i < 30; ++i)
+        problem << " (on s" << i << ")";
+    problem << ")))\n";
+    std::ofstream(dir / "design.textproto")
+        << "robot_domain: \"domain.pddl\"\n"
+           "task { name: \"all-on\" problem: \"all-on.pddl\" }\n"
+           "modification { name: \"first-on\" cost: 1 edit { model: HUMAN add_init: \"(on s0)\" "
+           "} }\n";
+    return (dir / "design.textproto").string();
+}
+
+class Starvation : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir = fs::temp_directory_path() / ("envdesign-starvation-" + std::to_string(getpid()));
+        fs::remove_all(dir);
+        spec = write_switches_spec(dir);
+    }
+    void TearDown() override {
+        if (!HasFailure())
+            fs::remove_all(dir);
+    }
+    client::Result blind(const LocalCluster &cluster, double time_limit_s) {
+        client::Options options;
+        options.heuristic = "blind";
+        options.time_limit_s = time_limit_s;
+        options.give_up_after_s = 60;
+        return client::run_design_remote(spec, cluster.url(), options);
+    }
+    fs::path dir;
+    std::string spec;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A request without a time limit ends at the coordinator's --max-time-limit: exit 4 with
+// the best design found, not a search that holds a slot and the planners for ever.
+TEST_F(Starvation, ARequestWithoutATimeLimitEndsAtTheCoordinatorsCap) {
+    LocalCluster cluster(1, {"--max-time-limit", "3"});
+    auto start = std::chrono::steady_clock::now();
+    client::Result result = blind(cluster, 0);
+    double took = seconds_since(start);
+    EXPECT_EQ(result.exit_code, 4) << result.error << cluster.logs();
+    EXPECT_LT(took, 15) << cluster.logs();
+    EXPECT_GT(took, 2.5);
+}
+
+// One job's search stops at --job-memory-mb: the planner stays small (it grew to ~900 MB
+// within a minute) and answers the job as out of limits.
+TEST_F(Starvation, APlannerJobStopsAtItsMemoryLimit) {
+    LocalCluster cluster(0, {"--max-time-limit", "8"});
+    Process &planner = cluster.add_planner({"--job-memory-mb", "64"});
+    std::atomic<bool> done{false};
+    long most = 0;
+    std::thread sampler([&] {
+        while (!done) {
+            most = std::max(most, resident_kib(planner.pid()));
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+    });
+    client::Result result = blind(cluster, 0);
+    done = true;
+    sampler.join();
+    EXPECT_EQ(result.exit_code, 4) << result.error;
+    EXPECT_TRUE(planner.running()) << cluster.logs();
+    // The limit counts search data; the process adds its code, grounding and caches.
+    EXPECT_LT(most, 200 * 1024) << "planner reached " << most << " KiB\n" << cluster.logs();
+}
+
+// The job deadline (0.5 s here) passes long before a blind search ends; the planner's
+// heartbeats show it working, so the job is not handed to the second planner.
+TEST_F(Starvation, AJobItsPlannerIsWorkingOnIsNeverSentTwice) {
+    LocalCluster cluster(2, {"--job-deadline", "0.5"});
+    client::Result result = blind(cluster, 6);
+    EXPECT_EQ(result.exit_code, 4) << result.error;
+    EXPECT_EQ(cluster.coordinator().output().find("missed its deadline"), std::string::npos)
+        << cluster.logs();
+}
+
+// SIGTERM in the middle of a search that would run for hours: the planner says it is
+// stopping, stops the search and exits within a second (it waited for the search).
+TEST_F(Starvation, APlannerStopsWithinASecondOfSigterm) {
+    LocalCluster cluster(1);
+    std::thread request([&] { blind(cluster, 20); });
+    ASSERT_TRUE(wait_for_output(cluster.planner(0), "spec", 10)) << cluster.logs();
+    std::this_thread::sleep_for(std::chrono::seconds(2)); // deep in the search
+    auto start = std::chrono::steady_clock::now();
+    cluster.planner(0).signal(SIGTERM);
+    int code = cluster.planner(0).wait();
+    double took = seconds_since(start);
+    request.join();
+    EXPECT_EQ(code, 0) << cluster.logs();
+    EXPECT_LT(took, 1.0) << cluster.logs();
+}
+
+// The audit's flood: forty requests that never end (blind search, no time limit), from forty
+// client names in one process. On a keyed bus the process is the client (fair_share.h): the
+// flood shares the planners with a well-behaved client, whose request gets them within a
+// heartbeat and finishes within twice its quiet time; the planners stay within their limit.
+TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
+    std::string key = (dir / "bus.key").string();
+    std::ofstream(key) << "k1 " << std::string(64, '7') << "\n";
+    fs::permissions(key, fs::perms::owner_read | fs::perms::owner_write);
+    // Nothing remembered: every run of the restaurant plans (else the second is free).
+    LocalCluster cluster(0, {"--stored-evaluations", "0"}, key);
+    std::vector<Process *> planners;
+    for (int i = 0; i < 2; ++i)
+        planners.push_back(
+            &cluster.add_planner({"--job-memory-mb", "128", "--remembered-answers", "0"}));
+    const std::string restaurant = source("examples/restaurant/c-two-tasks-t10.textproto");
+    client::Options options;
+    options.give_up_after_s = 30;
+    options.key_file = key;
+    ASSERT_EQ(client::run_design_remote(restaurant, cluster.url(), options).exit_code, 0)
+        << cluster.logs(); // warm: the coordinator is past its discovery
+    auto start = std::chrono::steady_clock::now();
+    ASSERT_EQ(client::run_design_remote(restaurant, cluster.url(), options).exit_code, 0);
+    double quiet = seconds_since(start);
+
+    bus::Bus flood(
+        cluster.url(),
+        std::make_shared<spdlog::logger>("flood", std::make_shared<spdlog::sinks::null_sink_mt>()),
+        std::make_shared<const bus::KeyRing>(bus::load_key_file(key)));
+    envdesign::spec_t never_ending = spec::bundle_spec(spec);
+    for (int i = 0; i < 40; ++i) {
+        envdesign::design_request_t request{};
+        request.utime = bus::now_utime();
+        request.request_id = 1;
+        request.sender = "flood-" + std::to_string(i);
+        request.spec = never_ending;
+        request.time_limit_s = 0;
+        request.max_design_size = -1;
+        request.heuristic = envdesign::design_request_t::HEURISTIC_BLIND;
+        flood.publish(bus::REQUEST, request);
+    }
+    std::atomic<bool> done{false};
+    long most = 0;
+    std::thread sampler([&] {
+        while (!done) {
+            for (Process *p : planners)
+                most = std::max(most, resident_kib(p->pid()));
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    });
+    std::this_thread::sleep_for(std::chrono::seconds(5)); // the flood holds every planner
+    start = std::chrono::steady_clock::now();
+    client::Result result = client::run_design_remote(restaurant, cluster.url(), options);
+    double flooded = seconds_since(start);
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    done = true;
+    sampler.join();
+    ASSERT_EQ(result.exit_code, 0) << result.error << cluster.logs();
+    expect_same_design(nlohmann::json::parse(result.json), self_contained(restaurant));
+    std::cout << "quiet " << quiet << " s, under the flood " << flooded
+              << " s; planner RSS at most " << most / 1024 << " MiB\n";
+    EXPECT_LT(flooded, std::max(2 * quiet, 1.0) + 2.0) << cluster.logs();
+    EXPECT_LT(most, 128 * 1024 + 100 * 1024) << "KiB";
+}
+
+// A refused request is not kept: 30 KB client names took the coordinator from 297 to 769 MB.
+TEST(Requests, AHugeClientNameIsRefusedAndNothingOfItIsKept) {
+    LocalCluster cluster(1);
+    bus::Bus bus(cluster.url(), std::make_shared<spdlog::logger>(
+                                    "client", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    int results = 0;
+    auto sub = bus.subscribe<envdesign::design_result_t>(
+        bus::RESULT, [&](const envdesign::design_result_t &) { ++results; });
+    long before = resident_kib(cluster.coordinator().pid());
+    for (int i = 0; i < 300; ++i) {
+        envdesign::design_request_t request{};
+        request.request_id = i + 1;
+        request.sender = std::string(30'000, 'n') + std::to_string(i);
+        request.time_limit_s = -1;
+        request.max_design_size = -1;
+        bus.publish(bus::REQUEST, request);
+        bus.handle(std::chrono::milliseconds(1));
+    }
+    bus.handle(std::chrono::milliseconds(1000));
+    long after = resident_kib(cluster.coordinator().pid());
+    EXPECT_EQ(results, 0);
+    EXPECT_LT(after - before, 20 * 1024) << before << " -> " << after << " KiB";
+    EXPECT_NE(cluster.coordinator().output().find("a client name of 30001 bytes"),
+              std::string::npos)
+        << cluster.logs();
+    client::Options options;
+    options.give_up_after_s = 20;
+    EXPECT_EQ(client::run_design_remote(source("examples/restaurant/c-two-tasks-t10.textproto"),
+                                        cluster.url(), options)
+                  .exit_code,
+              0)
+        << cluster.logs();
+}
+
+} // namespace
+} // namespace envdesign::e2e

@@ -1,0 +1,27 @@
+// Records read back from the coordinator's state file (design/evaluation_record.h): any bytes
+// either decode to values design/numbers.h accepts, which encode and decode again to the same
+// record, or are refused; never a crash, never NaN or 1e308 let through (issue 21).
+
+#include "design/evaluation_record.h"
+#include "design/numbers.h"
+
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
+    using namespace envdesign::design;
+    std::string bytes(reinterpret_cast<const char *>(data), size);
+    if (auto e = decode_evaluation(bytes)) {
+        if (evaluation_problem(*e))
+            std::abort(); // a value the wire would refuse came out of the store
+        std::string again = encode_evaluation(*e);
+        auto back = decode_evaluation(again);
+        if (!back || encode_evaluation(*back) != again)
+            std::abort();
+    }
+    if (auto bound = decode_robot_bound(bytes))
+        if (!valid_plan_cost(*bound))
+            std::abort();
+    return 0;
+}
