@@ -209,8 +209,9 @@ bool DesignLearner::prove_by_hitting_sets() {
 // The record of `task` under `design` from a smaller evaluated configuration, when every
 // modification added since is restricting and touches none of its witnesses.
 Record DesignLearner::inherited(const Configuration &design, int task) const {
-    for (const auto &[configuration, records] : known_) {
-        const Record &r = records[task];
+    for (const auto &known : known_) {
+        const Configuration &configuration = known.first; // a lambda below uses it: clang 14
+        const Record &r = known.second[task];             // captures no structured binding
         if (!r || !r->touch.known || configuration.size() > design.size() ||
             !std::includes(design.begin(), design.end(), configuration.begin(),
                            configuration.end()))

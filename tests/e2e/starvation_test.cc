@@ -107,6 +107,7 @@ TEST_F(Starvation, APlannerJobStopsAtItsMemoryLimit) {
     sampler.join();
     EXPECT_EQ(result.exit_code, 4) << result.error;
     EXPECT_TRUE(planner.running()) << cluster.logs();
+    std::cout << "planner RSS at most " << most / 1024 << " MiB with --job-memory-mb 64\n";
     // The limit counts search data; the process adds its code, grounding and caches.
     EXPECT_LT(most, 200 * 1024) << "planner reached " << most << " KiB\n" << cluster.logs();
 }
@@ -135,6 +136,7 @@ TEST_F(Starvation, APlannerStopsWithinASecondOfSigterm) {
     request.join();
     EXPECT_EQ(code, 0) << cluster.logs();
     EXPECT_LT(took, 1.0) << cluster.logs();
+    std::cout << "planner exited " << took << " s after SIGTERM\n";
 }
 
 // The audit's flood: forty requests that never end (blind search, no time limit), from forty
@@ -223,6 +225,8 @@ TEST(Requests, AHugeClientNameIsRefusedAndNothingOfItIsKept) {
     long after = resident_kib(cluster.coordinator().pid());
     EXPECT_EQ(results, 0);
     EXPECT_LT(after - before, 20 * 1024) << before << " -> " << after << " KiB";
+    std::cout << "coordinator " << before / 1024 << " -> " << after / 1024
+              << " MiB after 300 requests with 30 KB names\n";
     EXPECT_NE(cluster.coordinator().output().find("a client name of 30001 bytes"),
               std::string::npos)
         << cluster.logs();
