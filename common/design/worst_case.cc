@@ -315,7 +315,7 @@ HumanCost longest(const Product &p, const Adjacency &adjacency, const std::vecto
     out.product_nodes = static_cast<std::size_t>(p.size());
     for (int v = p.start();;) {
         int c = component[v], at = -1;
-        auto [u, k] = choice[c];
+        int u = choice[c].first, k = choice[c].second; // a lambda captures u: no binding
         append(out.plan, walk(
                              adjacency, p, v, [&](int w) { return w == u; },
                              [&](int w) { return component[w] == c; }, at));
