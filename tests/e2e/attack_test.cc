@@ -120,19 +120,25 @@ bool logged(Process &process, const std::string &text) {
     return process.output().find(text) != std::string::npos;
 }
 
+// A SOLVED answer to `job` from `sender`, its values left to the caller.
+envdesign::evaluation_t forged_answer(const envdesign::job_t &job, const std::string &sender) {
+    envdesign::evaluation_t e{};
+    e.utime = bus::now_utime();
+    e.request_id = job.request_id;
+    e.sender = sender;
+    e.coordinator = job.sender;
+    e.job_id = job.job_id;
+    e.kind = job.kind;
+    e.status = envdesign::evaluation_t::STATUS_SOLVED;
+    return e;
+}
+
 // Answers every job at once with the best possible evaluation (ie 1, cost 0): the issue's
 // forgery that made the restaurant's design {}.
 void forge_evaluations(Rogue &rogue, std::function<std::string(const envdesign::job_t &)> as) {
     rogue.on<envdesign::job_t>(
         bus::JOB, [&rogue, as](const envdesign::job_t &job, const std::string &) {
-            envdesign::evaluation_t e{};
-            e.utime = bus::now_utime();
-            e.request_id = job.request_id;
-            e.sender = as(job);
-            e.coordinator = job.sender;
-            e.job_id = job.job_id;
-            e.kind = job.kind;
-            e.status = envdesign::evaluation_t::STATUS_SOLVED;
+            envdesign::evaluation_t e = forged_answer(job, as(job));
             e.ie = 1;
             e.has_human_optimal_cost = true;
             e.has_robot_bound = job.kind == envdesign::job_t::KIND_ROBOT_BOUND;
@@ -387,14 +393,7 @@ void forge_robot_bounds(Rogue &rogue, double bound) {
                                [&rogue, bound](const envdesign::job_t &job, const std::string &) {
                                    if (job.kind != envdesign::job_t::KIND_ROBOT_BOUND)
                                        return;
-                                   envdesign::evaluation_t e{};
-                                   e.utime = bus::now_utime();
-                                   e.request_id = job.request_id;
-                                   e.sender = job.planner;
-                                   e.coordinator = job.sender;
-                                   e.job_id = job.job_id;
-                                   e.kind = job.kind;
-                                   e.status = envdesign::evaluation_t::STATUS_SOLVED;
+                                   envdesign::evaluation_t e = forged_answer(job, job.planner);
                                    e.has_robot_bound = true;
                                    e.robot_bound = bound;
                                    rogue.mouth().publish(bus::EVALUATION, e);
