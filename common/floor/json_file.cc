@@ -1,28 +1,11 @@
 #include "json_file.h"
 
 #include "floor.h"
+#include "pddl/text_location.h"
 
 #include <cmath>
 
 namespace envdesign::floor {
-
-namespace {
-
-// FILE:LINE:COL of a byte offset.
-pddl::Location location_of(const std::string &text, const std::string &path, std::size_t byte) {
-    pddl::Location where{path, 1, 1};
-    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++where.line;
-            where.column = 1;
-        } else {
-            ++where.column;
-        }
-    }
-    return where;
-}
-
-} // namespace
 
 JsonFile::JsonFile(const std::string &text, const std::string &path) : yaml_(path) {
     try {
@@ -32,7 +15,7 @@ JsonFile::JsonFile(const std::string &text, const std::string &path) : yaml_(pat
         std::string why = e.what();
         std::size_t colon = why.find(": ", why.find("column"));
         why = colon == std::string::npos ? why : why.substr(colon + 2);
-        throw pddl::ParseError(location_of(text, path, e.byte ? e.byte - 1 : 0),
+        throw pddl::ParseError(pddl::location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
                                "malformed JSON: " + why);
     } catch (const nlohmann::json::exception &e) { // a number too large for a double
         std::string why = e.what();

@@ -1,6 +1,7 @@
 #include "spec/spec_reader.h"
 
 #include "pddl/input_file.h"
+#include "pddl/text_location.h"
 #include "spec/json_positions.h"
 
 #include <google/protobuf/io/tokenizer.h>
@@ -119,20 +120,6 @@ bool ends_with(const std::string &s, const std::string &suffix) {
            s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-pddl::Location location_of_byte(const std::string &text, std::size_t byte,
-                                const std::string &file) {
-    pddl::Location where{file, 1, 1};
-    for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-        if (text[i] == '\n') {
-            ++where.line;
-            where.column = 1;
-        } else {
-            ++where.column;
-        }
-    }
-    return where;
-}
-
 // protobuf's JSON parser names the place as "(task[1].probability): invalid value ...",
 // "(modification[0]) colour: Cannot find field." or, at the top, ": invalid value ..."; some
 // messages and older versions as "colour: ..." alone. The error points at that key (for the
@@ -182,7 +169,7 @@ SpecFile read_json(const std::string &text, const std::string &path) {
         std::string message = e.what();
         auto reason = message.find("syntax error");
         throw pddl::ParseError(
-            location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
+            pddl::location_of_byte(text, e.byte ? e.byte - 1 : 0, path),
             "malformed JSON: " + (reason == std::string::npos ? message : message.substr(reason)));
     } catch (const nlohmann::json::exception &e) { // anything check_json_limits missed
         throw pddl::ParseError({path, 1, 1}, std::string("malformed JSON: ") + e.what());
