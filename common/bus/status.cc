@@ -57,13 +57,21 @@ StatusBoard::StatusBoard(Bus &bus) {
     subscription_ = bus.subscribe<envdesign::service_status_t>(
         STATUS, [this](const envdesign::service_status_t &s) {
             if (!s.sender.empty())
-                last_[s.sender] = s;
+                last_[ServiceId{s.sender, s.started_utime}] = s;
         });
 }
 
 bool StatusBoard::heard(const std::string &kind) const {
     return std::any_of(last_.begin(), last_.end(),
                        [&](const auto &entry) { return entry.second.kind == kind; });
+}
+
+std::map<std::string, int> StatusBoard::repeated_names() const {
+    std::map<std::string, int> count;
+    for (const auto &entry : last_)
+        ++count[entry.first.name];
+    std::erase_if(count, [](const auto &c) { return c.second < 2; });
+    return count;
 }
 
 } // namespace envdesign::bus

@@ -4,7 +4,8 @@
 // clients can tell a service that is up from one that is not. StatusPublisher fills in what
 // the bus knows (version, uptime, malformed messages, handler errors, authentication drops
 // per channel and reason); the service adds its own numbers. StatusBoard keeps the last
-// status of every sender heard.
+// status of every service process heard: by name and start, so that two processes with one
+// name (two clusters started alike on one bus) are two entries, not one.
 //
 //   bus::StatusPublisher status(bus, "coordinator", instance);
 //   status.tick([&](envdesign::service_status_t &s) { s.planners = ...; });  // bus thread
@@ -17,6 +18,8 @@
 #include "envdesign/service_status_t.hpp"
 
 #include <chrono>
+#include <compare>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -58,18 +61,28 @@ private:
     bool sent_ = false;
 };
 
-// The last status of each sender heard on a bus. Bus thread.
+// A service process on the bus: its name and the wall-clock microsecond it started. Names
+// may repeat (--name is the operator's); a process's start does not change.
+struct ServiceId {
+    std::string name;
+    std::int64_t started_utime = 0;
+    auto operator<=>(const ServiceId &) const = default;
+};
+
+// The last status of each service process heard on a bus. Bus thread.
 class StatusBoard {
 public:
     explicit StatusBoard(Bus &bus);
 
-    // By sender, in name order.
-    const std::map<std::string, envdesign::service_status_t> &services() const { return last_; }
+    // By name, then start.
+    const std::map<ServiceId, envdesign::service_status_t> &services() const { return last_; }
     // True once a service of `kind` was heard.
     bool heard(const std::string &kind) const;
+    // The names heard from more than one process, each with how many, in name order.
+    std::map<std::string, int> repeated_names() const;
 
 private:
-    std::map<std::string, envdesign::service_status_t> last_;
+    std::map<ServiceId, envdesign::service_status_t> last_;
     Subscription subscription_;
 };
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace envdesign::cluster {
 namespace {
@@ -125,7 +126,9 @@ void Coordinator::on_request(const design_request_t &request) {
     if (auto it = open_.find(name); it != open_.end()) {
         std::lock_guard lock(stats_mutex_);
         ++stats_.repeats;
-        publish_progress(it->second, Clock::now(), true); // "still at it"
+        // "Still at it"; while discovering it says nothing yet (answer()).
+        if (election_.role() == Role::ACTIVE)
+            publish_progress(it->second, Clock::now(), true);
         return;
     }
     if (auto it = closed_.find(name); it != closed_.end()) {
@@ -142,7 +145,7 @@ void Coordinator::on_request(const design_request_t &request) {
         auto result = error_result(2, "bad request: " + *problem);
         result.request_id = request.request_id;
         result.client = request.sender;
-        publish_result(std::move(result)); // not kept: a repeat is checked again, as cheaply
+        answer(std::move(result)); // not kept: a repeat is checked again, as cheaply
         return;
     }
     if (auto why = busy(request.sender)) {
@@ -150,7 +153,7 @@ void Coordinator::on_request(const design_request_t &request) {
         auto result = error_result(1, "the coordinator is busy (" + *why + "); try again later");
         result.request_id = request.request_id;
         result.client = request.sender;
-        publish_result(std::move(result)); // not kept: a repeat later may find room
+        answer(std::move(result)); // not kept: a repeat later may find room
         std::lock_guard lock(stats_mutex_);
         ++stats_.busy;
         return;
@@ -255,10 +258,14 @@ void Coordinator::elect(Clock::time_point now) {
         return;
     if (election_.role() != Role::STANDBY) {
         bus_.log().info("request - | {}", *change);
+        if (election_.role() == Role::ACTIVE)
+            for (auto &result : std::exchange(held_, {}))
+                publish_result(std::move(result));
         return;
     }
     bus_.log().warn("request - | {}; {} request(s) open here are left to it", *change,
                     open_.size());
+    held_.clear();
     waiting_.clear();
     open_.clear(); // cancels and joins the searches; no result goes out
     std::lock_guard lock(stats_mutex_);
@@ -362,6 +369,24 @@ void Coordinator::fill_status(envdesign::service_status_t &status) const {
         bus::add_drop(status, "store:evaluations.db", "bad-record", bad_records_reported_);
     std::lock_guard lock(stats_mutex_);
     status.jobs_done = stats_.results;
+}
+
+// While discovering, another coordinator may be answering: what this one would say waits
+// until it knows it is active (and goes when it stands by), one answer a request however
+// often its client re-sends it. Beyond max_waiting held answers the client's re-send asks
+// again.
+void Coordinator::answer(envdesign::design_result_t result) {
+    if (election_.role() == Role::ACTIVE) {
+        publish_result(std::move(result));
+        return;
+    }
+    auto same = std::find_if(held_.begin(), held_.end(), [&](const auto &held) {
+        return held.request_id == result.request_id && held.client == result.client;
+    });
+    if (same != held_.end())
+        *same = std::move(result);
+    else if (static_cast<int>(held_.size()) < config_.max_waiting)
+        held_.push_back(std::move(result));
 }
 
 void Coordinator::publish_result(envdesign::design_result_t result) {

@@ -18,6 +18,9 @@
 // Its status (bus/status.h) goes out once a second, idle or not: requests open and waiting,
 // live planners, jobs in flight, evaluations stored, drops, and its role: one coordinator
 // per bus is active, the others stand by and take over when it falls silent (election.h).
+// Only the active one says anything to clients: while discovering it takes requests
+// silently and holds its refusals (bad input, busy) until it knows it is active, so that a
+// request is never answered by two coordinators.
 // Handlers and tick() run on the bus thread. Messages that make no sense (bad sizes, unknown
 // enums, a request without a client name) are counted in bus.malformed() and logged.
 
@@ -114,6 +117,7 @@ private:
     void note_change(const envdesign::design_request_t &request,
                      envdesign::design_result_t &result);
     void publish_progress(Open &open, Clock::time_point now, bool force);
+    void answer(envdesign::design_result_t result);
     void publish_result(envdesign::design_result_t result);
     void fill_status(envdesign::service_status_t &status) const;
     void report_bad_records();
@@ -129,6 +133,7 @@ private:
     Clock::time_point last_tick_{};
     long long bad_records_reported_ = 0; // the state file's rejected records, logged
     std::map<std::string, Closed> closed_;
+    std::vector<envdesign::design_result_t> held_; // refusals while discovering (answer())
     // The last design per (client, spec name) of requests with a reason: their `change`.
     std::map<std::string, std::vector<std::string>> last_designs_;
     mutable std::mutex stats_mutex_;

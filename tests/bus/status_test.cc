@@ -30,7 +30,7 @@ TEST(Status, FirstAtOnceThenOnceAPeriod) {
     drain(bus);
     ASSERT_TRUE(board.heard("planner"));
     EXPECT_FALSE(board.heard("coordinator"));
-    const auto &s = board.services().at("planner/a");
+    const auto &s = board.services().at(ServiceId{"planner/a", status.started_utime()});
     EXPECT_EQ(s.kind, "planner");
     EXPECT_EQ(s.version, version());
     EXPECT_EQ(s.period_ms, 200);
@@ -39,7 +39,7 @@ TEST(Status, FirstAtOnceThenOnceAPeriod) {
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
     EXPECT_TRUE(status.tick(fill));
     drain(bus);
-    EXPECT_GT(board.services().at("planner/a").uptime_s, 0.2);
+    EXPECT_GT(board.services().at(ServiceId{"planner/a", status.started_utime()}).uptime_s, 0.2);
 }
 
 TEST(Status, CarriesTheBusCountsAndDrops) {
@@ -71,6 +71,7 @@ TEST(Status, BoardKeepsTheLastOfEachSender) {
     envdesign::service_status_t s{};
     s.kind = "coordinator";
     s.sender = "c";
+    s.started_utime = 1000;
     s.planners = 1;
     bus.publish(STATUS, s);
     s.planners = 2;
@@ -79,8 +80,35 @@ TEST(Status, BoardKeepsTheLastOfEachSender) {
     bus.publish(STATUS, s);
     drain(bus);
     ASSERT_EQ(board.services().size(), 1u);
-    EXPECT_EQ(board.services().at("c").planners, 2);
+    EXPECT_EQ(board.services().at(ServiceId{"c", 1000}).planners, 2);
     EXPECT_TRUE(board.heard("coordinator"));
+    EXPECT_TRUE(board.repeated_names().empty());
+}
+
+// Two clusters started alike on one bus: two processes named "c" are two entries, each with
+// its own numbers, and the name is reported as repeated.
+TEST(Status, BoardKeepsProcessesWithOneNameApart) {
+    Bus bus("memq://", quiet());
+    StatusBoard board(bus);
+    envdesign::service_status_t s{};
+    s.kind = "coordinator";
+    s.sender = "c";
+    s.started_utime = 2000;
+    s.role = "standby";
+    bus.publish(STATUS, s);
+    s.started_utime = 1000;
+    s.role = "active";
+    bus.publish(STATUS, s);
+    s.kind = "planner";
+    s.sender = "p";
+    s.role = "";
+    bus.publish(STATUS, s);
+    drain(bus);
+    ASSERT_EQ(board.services().size(), 3u);
+    EXPECT_EQ(board.services().at(ServiceId{"c", 1000}).role, "active");
+    EXPECT_EQ(board.services().at(ServiceId{"c", 2000}).role, "standby");
+    EXPECT_EQ(board.services().begin()->first, (ServiceId{"c", 1000})); // name, then start
+    EXPECT_EQ(board.repeated_names(), (std::map<std::string, int>{{"c", 2}}));
 }
 
 } // namespace

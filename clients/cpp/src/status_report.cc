@@ -67,13 +67,14 @@ std::string json_line(const service_status_t &s) {
     return j.dump() + "\n";
 }
 
-std::string table(const std::map<std::string, service_status_t> &services) {
+std::string table(const bus::StatusBoard &board) {
     std::string out = fmt::format("{:<12} {:<28} {:<11} {:<8} {:<20} {:>9} {:>5} {:>7} {:>8} {:>7} "
                                   "{:>9} {:>9} {:>6}\n",
                                   "KIND", "NAME", "ROLE", "VERSION", "STARTED", "UPTIME_S", "OPEN",
                                   "WAITING", "PLANNERS", "JOBS", "DONE", "STORED", "DROPS");
     std::string details;
-    for (const auto &[name, s] : services) {
+    for (const auto &[id, s] : board.services()) {
+        const std::string &name = id.name;
         out += fmt::format("{:<12} {:<28} {:<11} {:<8} {:<20} {:>9.0f} {:>5} {:>7} {:>8} {:>7} "
                            "{:>9} {:>9} {:>6}\n",
                            s.kind, name, role(s), s.version, started(s), s.uptime_s,
@@ -87,6 +88,11 @@ std::string table(const std::map<std::string, service_status_t> &services) {
             details += fmt::format("  {}: {} dropped on {}: {}\n", name, s.drop_counts[i],
                                    s.drop_channels[i], s.drop_reasons[i]);
     }
+    // Jobs and spec chunks are addressed by name: a repeated one reaches every process of it.
+    for (const auto &[name, count] : board.repeated_names())
+        details += fmt::format("  {}: {} services have this name (messages addressed to it reach "
+                               "all of them); give each its own --name\n",
+                               name, count);
     return out + details;
 }
 
@@ -106,8 +112,8 @@ StatusReport listen_status(const std::string &lcm_url, const StatusOptions &opti
     while (std::chrono::steady_clock::now() < end)
         on.handle(std::chrono::milliseconds(50));
     report.services = static_cast<int>(board.services().size());
-    report.text = table(board.services());
-    for (const auto &[name, s] : board.services())
+    report.text = table(board);
+    for (const auto &[id, s] : board.services())
         report.json += json_line(s);
     report.exit_code = board.heard("coordinator") ? 0 : 1;
     if (report.exit_code != 0)
