@@ -75,7 +75,7 @@ std::string placed(const std::string &message, const SettingPlaces &places) {
         auto at = message.find(flag);
         if (at != std::string::npos &&
             (at + flag.size() == message.size() ||
-             !std::isalnum(message[at + flag.size()]) && message[at + flag.size()] != '-'))
+             (!std::isalnum(message[at + flag.size()]) && message[at + flag.size()] != '-')))
             return place + ": error: " + message;
     }
     return message;
