@@ -2,6 +2,7 @@
 
 #include "cli_error.h"
 
+#include "floor/floor_draw.h"
 #include "floor/floor_error.h"
 
 #include <nlohmann/json.hpp>
@@ -10,9 +11,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <set>
-#include <sstream>
 
 namespace envdesign::cli {
 
@@ -80,113 +79,27 @@ int run_export(FloorFlags &flags) {
     return 0;
 }
 
-// The picture of floor.json: metres -> pixels, y flipped, 1000 px across.
-class FloorPicture {
-public:
-    explicit FloorPicture(const nlohmann::json &floor) : floor_(floor) {
-        for (const auto &p : floor["places"])
-            extend(p["x"].get<double>(), p["y"].get<double>());
-        for (const auto &w : floor["walls"])
-            for (const auto &q : w)
-                extend(q[0].get<double>(), q[1].get<double>());
-        scale_ = 1000 / std::max({max_x_ - min_x_, max_y_ - min_y_, 1e-9});
-    }
-
-    std::string svg(const std::set<std::string> &design) {
-        out_ << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << x(max_x_) + 40
-             << "\" height=\"" << y(min_y_) + 40 << "\" font-family=\"sans-serif\">\n"
-             << "<title>" << escaped(floor_["source"]["map"].get<std::string>()) << "</title>\n";
-        for (const auto &c : floor_["candidates"])
-            if (design.count(c["name"].get<std::string>()))
-                candidate(c);
-        for (const auto &w : floor_["walls"])
-            line(w[0], w[1], "stroke=\"#222\" stroke-width=\"4\"");
-        edges("robot_edges", "stroke=\"#777\" stroke-width=\"2\"");
-        // On top: where people expect a move the lanes do not offer (a one-way lane's reverse).
-        edges("human_only_edges", "stroke=\"#5b9bd5\" stroke-dasharray=\"6 4\"");
-        for (const auto &p : floor_["places"])
-            place(p);
-        out_ << "<text x=\"20\" y=\"" << y(min_y_) + 32 << "\" font-size=\"12\">grey: lanes; "
-             << "blue dashed: what people expect; orange: tape; green: new lane; red: barrier; "
-                "yellow: marked area</text>\n</svg>\n";
-        return out_.str();
-    }
-
-private:
-    void extend(double px, double py) {
-        min_x_ = std::min(min_x_, px), max_x_ = std::max(max_x_, px);
-        min_y_ = std::min(min_y_, py), max_y_ = std::max(max_y_, py);
-    }
-    double x(double metres) const { return 20 + (metres - min_x_) * scale_; }
-    double y(double metres) const { return 20 + (max_y_ - metres) * scale_; }
-
-    static std::string escaped(const std::string &text) {
-        std::string out;
-        for (char c : text)
-            out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-        return out;
-    }
-
-    void line(const nlohmann::json &a, const nlohmann::json &b, const std::string &style) {
-        out_ << "<line x1=\"" << x(a[0]) << "\" y1=\"" << y(a[1]) << "\" x2=\"" << x(b[0])
-             << "\" y2=\"" << y(b[1]) << "\" " << style << "/>\n";
-    }
-
-    void edges(const char *key, const std::string &style) {
-        std::map<std::string, nlohmann::json> at;
-        for (const auto &p : floor_["places"])
-            at[p["object"].get<std::string>()] = {p["x"], p["y"]};
-        for (const auto &e : floor_[key])
-            line(at[e[0].get<std::string>()], at[e[1].get<std::string>()], style);
-    }
-
-    void candidate(const nlohmann::json &c) {
-        std::string kind = c["kind"];
-        if (kind == "zone") {
-            bool blocked = c["zone_type"] == "BLOCKED";
-            out_ << "<polygon class=\"zone\" points=\"";
-            for (const auto &q : c["polygon"])
-                out_ << x(q[0]) << "," << y(q[1]) << " ";
-            out_ << "\" fill=\"" << (blocked ? "#e0303080" : "#f0d02080") << "\"><title>"
-                 << escaped(c["name"]) << "</title></polygon>\n";
-            return;
-        }
-        std::string colour = kind == "tape" ? "#f08000" : "#20a040";
-        for (const auto &s : c["segments"])
-            line(s[0], s[1],
-                 "class=\"" + kind + "\" stroke=\"" + colour +
-                     "\" stroke-width=\"8\" stroke-opacity=\"0.7\"");
-    }
-
-    void place(const nlohmann::json &p) {
-        std::string name = p["name"].get<std::string>();
-        double px = x(p["x"]), py = y(p["y"]);
-        out_ << "<circle cx=\"" << px << "\" cy=\"" << py << "\" r=\"5\" fill=\""
-             << (name.empty() ? "#999" : "#000") << "\"/>\n<text x=\"" << px + 7 << "\" y=\""
-             << py - 7 << "\" font-size=\"13\">"
-             << escaped(p["object"].get<std::string>() + (name.empty() ? "" : " " + name))
-             << "</text>\n";
-    }
-
-    const nlohmann::json &floor_;
-    std::ostringstream out_;
-    double min_x_ = 1e300, max_x_ = -1e300, min_y_ = 1e300, max_y_ = -1e300, scale_ = 1;
-};
-
 int run_draw(const FloorFlags &flags) {
-    std::string path = flags.draw_dir + "/floor.json";
-    std::ifstream in(path);
-    nlohmann::json floor = nlohmann::json::parse(in, nullptr, false);
-    if (!in || floor.is_discarded() || floor.value("format", "") != "envdesign-floor")
-        throw CommandError(2, path + " is not a floor.json written by envdesign floor import");
+    // A floor.json that does not read throws pddl::ParseError: main() reports it (exit 2).
+    nlohmann::json floor = floor::read_floor_json(flags.draw_dir);
     std::set<std::string> names;
     for (const auto &c : floor["candidates"])
-        names.insert(c["name"].get<std::string>());
-    for (const auto &name : flags.draw_design)
+        names.insert(c.value("name", ""));
+    floor::FloorDrawing drawing;
+    for (const auto &name : flags.draw_design) {
         if (!names.count(name))
-            throw CommandError(2, "no candidate '" + name + "' in " + path);
+            throw CommandError(2,
+                               "no candidate '" + name + "' in " + flags.draw_dir + "/floor.json");
+        drawing.design.insert(name);
+    }
+    std::string svg;
+    try {
+        svg = floor::floor_svg(floor, drawing);
+    } catch (const floor::FloorError &e) {
+        throw CommandError(2, e.what());
+    }
     std::ofstream out(flags.draw_out);
-    out << FloorPicture(floor).svg({flags.draw_design.begin(), flags.draw_design.end()});
+    out << svg;
     out.close();
     if (!out)
         throw CommandError(1, "cannot write " + flags.draw_out);

@@ -2,8 +2,11 @@
 
 #include "cli_error.h"
 #include "local_run.h"
+#include "report_floor.h"
 #include "report_html.h"
 
+#include "design/configuration.h"
+#include "design/explicability.h"
 #include "design/progress.h"
 #include "pddl/parse_error.h"
 #include "spec/design_spec.h"
@@ -24,6 +27,34 @@ void add_report_flags(CLI::App &command, ReportFlags &flags) {
         ->check(CLI::Range(1, 100));
     add_engine_flags(command, flags.workers, flags.time_limit_s, flags.heuristic);
 }
+
+namespace {
+
+std::optional<client::Plan> solved(const design::PlanOutcome &outcome) {
+    if (outcome.status != design::PlanStatus::SOLVED)
+        return std::nullopt;
+    return outcome.plan;
+}
+
+// The plans under the empty design that the message does not carry: what people expected
+// (P_H) and the robot's optimal plan (P_R). The search planned both for the baseline, so
+// the cache answers most; at most a few seconds in all.
+client::ReportExtras plans_before(const design::DesignProblem &problem, LocalRun &run) {
+    constexpr double AT_MOST_S = 10;
+    design::Deadline deadline = design::Deadline::in(AT_MOST_S);
+    client::ReportExtras extras;
+    for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
+        design::ModelPair models = design::configured_models(problem, {}, static_cast<int>(i));
+        design::PlanCache &planner = run.local().planner();
+        extras.expected_before.push_back(solved(
+            design::solve_model(models.human_domain, models.human_problem, planner, deadline)));
+        extras.robot_optimal_before.push_back(solved(
+            design::solve_model(models.robot_domain, models.robot_problem, planner, deadline)));
+    }
+    return extras;
+}
+
+} // namespace
 
 int run_report(const ReportFlags &flags) {
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
@@ -50,9 +81,11 @@ int run_report(const ReportFlags &flags) {
     if (!message.has_design || !message.has_explanation)
         throw CommandError(4, "no design was evaluated in time: nothing to report");
     std::string title = std::filesystem::path(flags.spec).filename().string();
+    client::ReportExtras extras = plans_before(*problem, run);
+    extras.floor_section = report_floor_section(flags.spec, message, extras);
     std::string page;
     try {
-        page = client::report_html(message, title);
+        page = client::report_html(message, title, extras);
     } catch (const client::PlotError &e) {
         throw CommandError(1, e.what());
     }

@@ -17,8 +17,9 @@ h1{font-size:1.6em;margin-bottom:.2em}h2{font-size:1.25em;border-bottom:2px soli
 .box{background:#eef6ee;border:1px solid #9c9;border-radius:6px;padding:.8em 1.2em;font-size:1.1em}
 table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:.3em .7em;text-align:right}
 th{background:#f3f3f3}td.l,th.l{text-align:left}.plan{font-family:monospace;font-size:.9em}
-.add{background:#d6f5d6}.del{background:#f8d6d6;text-decoration:line-through}.muted{color:#666;font-size:.9em}
+.differs{background:#ffd966}.muted{color:#666;font-size:.9em}
 figure{margin:1em 0}figcaption{color:#444;font-size:.95em}
+.floorpair{display:flex;gap:1em}.floorpair figure{margin:.5em 0}
 </style>)";
 
 std::string h(const std::string &text) { return html_escape(text); }
@@ -72,27 +73,72 @@ void breakdown(ostream &out, const envdesign::design_result_t &r) {
         << " uses discounted by gamma = " << shown(w.gamma) << ".</p>\n";
 }
 
-void plan_cell(ostream &out, const std::vector<std::string> &plan,
-               const std::vector<std::string> &against, bool mark) {
+// `plan`'s steps, those not in `against` marked; `against` unset: none marked.
+void plan_cell(ostream &out, const std::optional<Plan> &plan, const std::optional<Plan> &against) {
     out << "<td class='l plan'>";
-    if (plan.empty())
+    if (!plan) {
+        out << "not solved</td>";
+        return;
+    }
+    if (plan->empty())
         out << "(empty plan)";
-    if (!mark) {
-        for (const auto &s : plan)
-            out << h(s) << "<br>";
-    } else {
-        for (const auto &step : plan_diff(against, plan)) {
-            if (step.side == DiffSide::ONLY_FIRST)
-                continue; // shown in the explicable plan's cell
-            out << (step.side == DiffSide::ONLY_SECOND ? "<span class=add>" : "<span>")
-                << h(step.action) << "</span><br>";
-        }
+    for (const auto &step : plan_diff(against.value_or(*plan), *plan)) {
+        if (step.side == DiffSide::ONLY_FIRST)
+            continue; // a step of the other plan
+        out << (step.side == DiffSide::ONLY_SECOND ? "<span class=differs>" : "<span>")
+            << h(step.action) << "</span><br>";
     }
     out << "</td>";
 }
 
+std::optional<Plan> at(const std::vector<std::optional<Plan>> &plans, std::size_t i) {
+    return i < plans.size() ? plans[i] : std::nullopt;
+}
+
+// The plans before and after: what people expected before beside what the robot did before
+// and does after, then what people expect after. The robot's steps people did not expect
+// before are marked, and in an expected plan the steps the robot does not take then.
+void plans_table(ostream &out, const std::string &behaviour, const envdesign::task_result_t &t,
+                 const envdesign::task_explanation_t &e, const std::optional<Plan> &expected_before,
+                 const std::optional<Plan> &robot_optimal_before) {
+    std::optional<Plan> robot_before, expected_after, robot_optimal_after;
+    if (e.has_baseline)
+        robot_before = e.baseline.plan;
+    if (e.has_expected_plan)
+        expected_after = e.expected_plan;
+    if (e.has_robot_plan)
+        robot_optimal_after = e.robot_plan;
+    out << "<table class=plans><tr><th class=l>people expected, before</th><th class=l>the "
+           "robot, before</th><th class=l>the robot, after</th><th class=l>people expect, "
+           "after</th></tr><tr>";
+    plan_cell(out, expected_before, robot_before);
+    plan_cell(out, robot_before, expected_before);
+    plan_cell(out, t.plan, expected_before);
+    plan_cell(out, expected_after, t.plan);
+    out << "</tr></table><p class=muted>The robot's plan is " << h(plan_name(behaviour))
+        << " (&pi;); what people expect is an optimal plan of their model. Marked: the robot's "
+           "steps people did not expect before the design; in a plan people expect, the steps "
+           "the robot does not take then.";
+    if (t.has_human_optimal_cost && t.human_plan_cost == t.human_optimal_cost)
+        out << " After the design, &pi; costs people what their expected plan costs: they find "
+               "it just as good.";
+    out << "</p>\n";
+    bool before_differs =
+        robot_optimal_before && robot_before && *robot_optimal_before != *robot_before;
+    bool after_differs = robot_optimal_after && *robot_optimal_after != t.plan;
+    if (!before_differs && !after_differs)
+        return;
+    out << "<table><tr><th class=l>the robot's optimal plan, before</th><th class=l>the robot's "
+           "optimal plan, after</th></tr><tr>";
+    plan_cell(out, robot_optimal_before, robot_before);
+    plan_cell(out, robot_optimal_after, t.plan);
+    out << "</tr></table><p class=muted>Marked: steps not in &pi; at that time.</p>\n";
+}
+
 void task_section(ostream &out, const std::string &behaviour, const envdesign::task_result_t &t,
-                  const envdesign::task_explanation_t &e) {
+                  const envdesign::task_explanation_t &e,
+                  const std::optional<Plan> &expected_before,
+                  const std::optional<Plan> &robot_optimal_before) {
     const auto &b = e.baseline;
     auto cell = [&](double v, bool known) { return "<td>" + (known ? shown(v) : "?") + "</td>"; };
     out << "<h3>Task " << h(t.name) << " (probability " << shown(t.probability) << ")</h3>\n";
@@ -119,22 +165,7 @@ void task_section(ostream &out, const std::string &behaviour, const envdesign::t
     out << "<tr><td class=l>human cost of &pi;, c_H(&pi;)</td>"
         << cell(b.human_plan_cost, e.has_baseline) << cell(t.human_plan_cost, true)
         << "</tr></table>\n";
-    out << "<table><tr><th class=l>&pi;, " << h(plan_name(behaviour))
-        << " (what the robot does)</th>"
-           "<th class=l>robot's optimal plan</th><th class=l>what observers expect</th></tr><tr>";
-    plan_cell(out, t.plan, {}, false);
-    if (e.has_robot_plan)
-        plan_cell(out, e.robot_plan, t.plan, true);
-    else
-        out << "<td class=l>not solved</td>";
-    if (e.has_expected_plan)
-        plan_cell(out, e.expected_plan, t.plan, true);
-    else
-        out << "<td class=l>not solved</td>";
-    out << "</tr></table><p class=muted>Highlighted steps are not in &pi;.";
-    if (t.has_human_optimal_cost && t.human_plan_cost == t.human_optimal_cost)
-        out << " &pi; costs observers what their expected plan costs: they find it just as good.";
-    out << "</p>\n";
+    plans_table(out, behaviour, t, e, expected_before, robot_optimal_before);
 }
 
 void marginal_section(ostream &out, const envdesign::design_result_t &r) {
@@ -224,20 +255,23 @@ std::string html_escape(const std::string &text) {
     return out;
 }
 
-std::string report_html(const envdesign::design_result_t &r, const std::string &title) {
+std::string report_html(const envdesign::design_result_t &r, const std::string &title,
+                        const ReportExtras &extras) {
     ReportPlots plots = report_plots(r);
     std::ostringstream out;
     out << "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>envdesign: " << h(title)
         << "</title>" << STYLE << "</head><body>\n";
     out << "<h1>Environment design for " << h(title) << "</h1>\n";
     recommendation(out, r);
+    out << extras.floor_section;
     breakdown(out, r);
     figure(out, plots.cost_breakdown,
            "The weighted terms that add up to each objective: the chosen design, the empty design "
            "and the next designs of the ranking below.");
     out << "<h2>Each task, before and after</h2>\n";
     for (std::size_t i = 0; i < r.tasks.size() && i < r.explanation.tasks.size(); ++i)
-        task_section(out, r.explanation.robot_behaviour, r.tasks[i], r.explanation.tasks[i]);
+        task_section(out, r.explanation.robot_behaviour, r.tasks[i], r.explanation.tasks[i],
+                     at(extras.expected_before, i), at(extras.robot_optimal_before, i));
     marginal_section(out, r);
     break_even_section(out, r);
     ranking_section(out, r);

@@ -6,8 +6,10 @@
 
 #include "envdesign/design_result_t.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace envdesign::client {
 
@@ -25,9 +27,24 @@ struct ReportPlots {
 };
 ReportPlots report_plots(const envdesign::design_result_t &result);
 
+using Plan = std::vector<std::string>;
+
+// What the local `envdesign report` adds to the message, which carries only pi under the
+// empty design.
+struct ReportExtras {
+    // Per task of result.tasks, under the empty design: the plan people expect (an optimal
+    // plan of P_H) and the robot's optimal plan (P_R); unset or missing: not solved.
+    std::vector<std::optional<Plan>> expected_before;
+    std::vector<std::optional<Plan>> robot_optimal_before;
+    // HTML the caller drew (a floor spec's pictures, common/floor/floor_draw.h), after the
+    // recommendation; empty: none.
+    std::string floor_section;
+};
+
 // The page for `result` (which must have a design and an explanation); `title` names the
 // spec. Throws PlotError when gnuplot cannot draw.
-std::string report_html(const envdesign::design_result_t &result, const std::string &title);
+std::string report_html(const envdesign::design_result_t &result, const std::string &title,
+                        const ReportExtras &extras = {});
 
 // Text with &, <, >, " escaped.
 std::string html_escape(const std::string &text);

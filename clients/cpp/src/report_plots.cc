@@ -81,9 +81,13 @@ std::string label(const envdesign::design_point_t &p) {
     return out;
 }
 
-const char *HEADER = "set terminal svg size 900,400 dynamic font 'sans,12' background '#ffffff'\n"
-                     "set key outside right top noenhanced\n"
-                     "set grid\n";
+// The terminal and style every plot shares; `height` in pixels.
+std::string header(int height) {
+    return "set terminal svg size 900," + std::to_string(height) +
+           " dynamic font 'sans,12' background '#ffffff'\n"
+           "set key outside right top noenhanced\n"
+           "set grid\n";
+}
 
 // The designs drawn: the ranking (or the chosen one), then the baseline if not among them.
 std::vector<envdesign::design_point_t> series(const envdesign::design_result_t &r) {
@@ -124,7 +128,51 @@ std::vector<envdesign::design_point_t> series(const envdesign::design_result_t &
     return unique;
 }
 
-// One line per design: its objective at each x (T or alpha), from its design point.
+// One design's objective at each x of a plot.
+struct Line {
+    std::string title;
+    bool chosen = false;
+    std::vector<std::pair<double, double>> points; // finite values only
+};
+
+// The y range of `lines`: linear from 0 when they span less than a factor 20 (or touch 0),
+// else logarithmic, so that the chosen design never lies flat on the axis.
+std::string y_axis(const std::vector<Line> &lines) {
+    double low = INFINITY, high = -INFINITY;
+    for (const auto &l : lines)
+        for (const auto &[x, y] : l.points)
+            low = std::min(low, y), high = std::max(high, y);
+    std::ostringstream gp;
+    if (!std::isfinite(low))
+        return "set yrange [0:1]\n";
+    if (low > 0 && high / low > 20)
+        gp << "set logscale y\nset yrange [" << low / 1.5 << ":" << high * 1.5 << "]\n";
+    else
+        gp << "set yrange [" << std::min(0.0, low * 1.1) << ":" << std::max(high * 1.1, 1e-9)
+           << "]\n";
+    return gp.str();
+}
+
+// One panel: `lines` as data blocks $<prefix>N and a plot command, the chosen one wide.
+std::string panel(const std::vector<Line> &lines, const std::string &prefix) {
+    std::ostringstream gp;
+    for (std::size_t d = 0; d < lines.size(); ++d) {
+        gp << "$" << prefix << d << " << EOD\n";
+        for (const auto &[x, y] : lines[d].points)
+            gp << x << " " << y << "\n";
+        gp << "EOD\n";
+    }
+    gp << y_axis(lines) << "plot ";
+    for (std::size_t d = 0; d < lines.size(); ++d)
+        gp << (d ? ", " : "") << "$" << prefix << d << " with lines lw "
+           << (lines[d].chosen ? 3 : 1.5) << " title " << quoted(lines[d].title);
+    gp << "\n";
+    return gp.str();
+}
+
+// The designs' objectives against T or alpha: the chosen design and its rivals on an axis
+// of their own (log when they span more than a factor 20), the empty design apart below, on
+// its own axis: on one linear axis it dwarfs the rest (issue 25).
 std::string lines_plot(const envdesign::design_result_t &r, bool by_horizon) {
     const auto &w = r.explanation;
     auto designs = series(r);
@@ -135,34 +183,45 @@ std::string lines_plot(const envdesign::design_result_t &r, bool by_horizon) {
         right = std::max(right, 1.3 * b.horizon_up.at);
     if (!by_horizon && b.alpha_up.found)
         right = std::max(right, 1.5 * b.alpha_up.at);
-    std::ostringstream gp;
-    gp << HEADER;
-    gp << "set xlabel "
-       << quoted(by_horizon ? "horizon T (uses of the environment)"
-                            : "alpha (weight of inexplicability)")
-       << "\n";
-    gp << "set ylabel 'objective (lower is better)'\n";
-    gp << "set arrow from " << spec_x << ", graph 0 to " << spec_x
-       << ", graph 1 nohead dt 2 lc rgb '#555555'\n";
-    gp << "set label " << quoted(by_horizon ? "spec's T" : "spec's alpha") << " at " << spec_x
-       << ", graph 0.95 offset 0.5,0 noenhanced\n";
+    std::vector<Line> rivals, empty;
     for (std::size_t d = 0; d < designs.size(); ++d) {
-        gp << "$d" << d << " << EOD\n";
+        Line line{label(designs[d]) + (d == 0 ? " (chosen)" : ""), d == 0, {}};
         int steps = by_horizon ? static_cast<int>(right) : 200;
         for (int i = by_horizon ? 1 : 0; i <= steps; ++i) {
             double x = by_horizon ? i : right * i / steps;
             double y = objective_with(w, designs[d], by_horizon ? static_cast<int>(x) : w.horizon,
                                       by_horizon ? w.alpha : x);
             if (std::isfinite(y))
-                gp << x << " " << y << "\n";
+                line.points.push_back({x, y});
         }
-        gp << "EOD\n";
+        bool apart = designs[d].design.empty() && d != 0;
+        (apart ? empty : rivals).push_back(std::move(line));
+        if (apart)
+            empty.back().title = "{} (the empty design, own axis)";
     }
-    gp << "plot ";
-    for (std::size_t d = 0; d < designs.size(); ++d)
-        gp << (d ? ", " : "") << "$d" << d << " with lines lw " << (d == 0 ? 3 : 1.5) << " title "
-           << quoted(label(designs[d]) + (d == 0 ? " (chosen)" : ""));
-    gp << "\n";
+    std::ostringstream gp;
+    gp << header(empty.empty() ? 400 : 560);
+    std::string x_label =
+        by_horizon ? "horizon T (uses of the environment)" : "alpha (weight of inexplicability)";
+    gp << "set arrow from " << spec_x << ", graph 0 to " << spec_x
+       << ", graph 1 nohead dt 2 lc rgb '#555555'\n";
+    gp << "set label " << quoted(by_horizon ? "spec's T" : "spec's alpha") << " at " << spec_x
+       << ", graph 0.95 offset 0.5,0 noenhanced\n";
+    double chosen_y = objective_with(w, designs[0], w.horizon, w.alpha);
+    if (std::isfinite(chosen_y))
+        gp << "set label 1001 " << quoted(shown(chosen_y)) << " at " << spec_x << ", " << chosen_y
+           << " point pt 7 ps 1 offset 0.8,0.8 noenhanced\n";
+    gp << "set ylabel 'objective (lower is better)'\n";
+    if (empty.empty()) {
+        gp << "set xlabel " << quoted(x_label) << "\n" << panel(rivals, "d");
+        return run_gnuplot(gp.str());
+    }
+    gp << "set multiplot\nset lmargin 12\nset rmargin 44\n"
+       << "set origin 0,0.36\nset size 1,0.64\nunset xlabel\n"
+       << panel(rivals, "d") << "unset label 1001\nunset logscale y\n"
+       << "set origin 0,0\nset size 1,0.38\nset ylabel 'empty design'\nset xlabel "
+       << quoted(x_label) << "\n"
+       << panel(empty, "e") << "unset multiplot\n";
     return run_gnuplot(gp.str());
 }
 
@@ -174,31 +233,67 @@ std::size_t rank_of(const envdesign::design_result_t &r, const envdesign::design
     return 0;
 }
 
-// Stacked bars: alpha * inexplicability, beta * design cost, kappa * robot cost.
+struct Bar {
+    std::string name;
+    envdesign::design_terms_t terms;
+};
+
+// Stacked bars of `bars` (alpha * inexplicability, beta * design cost, kappa * robot cost),
+// the objective written above each, and a marker on the chosen one's top.
+std::string bars_panel(const envdesign::explanation_t &w, const std::vector<Bar> &bars,
+                       const std::string &block, const std::string &chosen_title, bool key) {
+    auto finite = [](double v) { return std::isfinite(v) ? v : 0.0; };
+    std::ostringstream gp;
+    double top = 0;
+    gp << "$" << block << " << EOD\n";
+    for (const auto &[name, t] : bars) {
+        double sum = finite(w.alpha * t.inexplicability) + finite(w.beta * t.design_cost) +
+                     finite(w.kappa * t.robot_cost);
+        top = std::max(top, sum);
+        gp << data_label(name) << " " << finite(w.alpha * t.inexplicability) << " "
+           << finite(w.beta * t.design_cost) << " " << finite(w.kappa * t.robot_cost) << " " << sum
+           << " " << data_label(shown(t.objective)) << "\n";
+    }
+    gp << "EOD\n";
+    gp << "set yrange [0:" << std::max(top * 1.18, 1e-9) << "]\n"
+       << (key ? "set key\n" : "unset key\n");
+    gp << "plot $" << block
+       << " using 2:xtic(1) title 'alpha x inexplicability' lc rgb '#d95f02', "
+          "'' using 3 title 'beta x design cost' lc rgb '#7570b3', "
+          "'' using 4 title 'kappa x robot cost' lc rgb '#1b9e77', "
+          "'' using 0:5:6 with labels offset 0,0.8 notitle";
+    if (!chosen_title.empty())
+        gp << ", '' every ::0::0 using 0:5 with points pt 7 ps 1.2 lc rgb '#000000' title "
+           << quoted(chosen_title);
+    gp << "\n";
+    return gp.str();
+}
+
+// The weighted terms of the chosen design and the next ones of the ranking on one axis, the
+// empty design's on its own axis beside them (it would flatten the rest).
 std::string breakdown_plot(const envdesign::design_result_t &r) {
     const auto &w = r.explanation;
-    std::vector<std::pair<std::string, envdesign::design_terms_t>> bars{{"chosen", r.best}};
-    if (r.has_baseline)
-        bars.push_back({"empty design", r.baseline});
+    std::vector<Bar> bars{{"chosen", r.best}};
     for (const auto &p : r.ranking)
         if (p.design != r.design && !std::isnan(p.expected_ie) && bars.size() < 4 &&
             std::isfinite(p.terms.objective))
             bars.push_back({"rank " + std::to_string(rank_of(r, p)), p.terms});
+    std::string chosen = label(r.explanation.chosen) + " (chosen)";
     std::ostringstream gp;
-    gp << HEADER;
+    gp << header(400);
     gp << "set style data histograms\nset style histogram rowstacked\n"
-          "set style fill solid 0.85 border -1\nset boxwidth 0.6\n"
-          "set ylabel 'weighted objective terms'\nset xtics noenhanced\n";
-    gp << "$bars << EOD\n";
-    for (const auto &[name, t] : bars) {
-        auto finite = [](double v) { return std::isfinite(v) ? v : 0.0; };
-        gp << data_label(name) << " " << finite(w.alpha * t.inexplicability) << " "
-           << finite(w.beta * t.design_cost) << " " << finite(w.kappa * t.robot_cost) << "\n";
+          "set style fill solid 0.85 border -1\nset boxwidth 0.6\nset xtics noenhanced\n";
+    bool apart = r.has_baseline && !r.design.empty();
+    if (!apart) {
+        gp << "set ylabel 'weighted objective terms'\n"
+           << bars_panel(w, bars, "bars", chosen, true);
+        return run_gnuplot(gp.str());
     }
-    gp << "EOD\n";
-    gp << "plot $bars using 2:xtic(1) title 'alpha x inexplicability' lc rgb '#d95f02', "
-          "'' using 3 title 'beta x design cost' lc rgb '#7570b3', "
-          "'' using 4 title 'kappa x robot cost' lc rgb '#1b9e77'\n";
+    gp << "set multiplot\nset key outside below\nset origin 0,0\nset size 0.74,1\n"
+          "set ylabel 'weighted objective terms'\n"
+       << bars_panel(w, bars, "bars", chosen, true)
+       << "set origin 0.74,0\nset size 0.26,1\nset ylabel 'empty design (own axis)'\n"
+       << bars_panel(w, {{"empty design", r.baseline}}, "empty", "", false) << "unset multiplot\n";
     return run_gnuplot(gp.str());
 }
 
