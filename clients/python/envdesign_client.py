@@ -2,14 +2,18 @@
 """envdesign's Python client: the optimal design of a spec file from a running coordinator.
 
     envdesign-client SPEC [--connect URL] [--json] [--timeout S] [--time-limit S]
-        [--max-design-size K] [--prune none|relevant] [--heuristic H] [--key-file FILE]
+        [--max-design-size K] [--ranking N] [--search witness|exhaustive]
+        [--prune none|relevant] [--heuristic H] [--key-file FILE]
+
+prints what `envdesign design SPEC --connect URL` prints (envdesign_text.py), or with --json
+the result as `envdesign design --json` writes it.
 
     import envdesign_client
     result = envdesign_client.design("spec.textproto", "udpm://239.255.76.67:7667?ttl=0")
     print(result["design"], result["objective"])
 
-Installed by `pip install --no-build-isolation clients/python` (with the message types), or
-run in the repository as `python3 clients/python/envdesign_client.py` after a build.
+Installed by `sh clients/python/install.sh` (a venv with the message types), or run in the
+repository as `python3 clients/python/envdesign_client.py` after a build.
 
 Debian ships no LCM Python module, so this speaks LCM's UDP multicast protocol itself (small
 and fragmented messages, stdlib sockets) and uses the classes lcm-gen writes for our types
@@ -32,6 +36,7 @@ import time
 import urllib.parse
 
 import envdesign_auth
+import envdesign_text
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 for candidate in (os.environ.get("ENVDESIGN_PYTHON_TYPES", ""), HERE,  # HERE: installed
@@ -45,7 +50,7 @@ try:
                            design_result_t, spec_file_t, spec_t)
 except ImportError:
     MISSING_TYPES = ("envdesign-client: the LCM message types (Python package 'envdesign') are "
-                     "missing: pip install --no-build-isolation clients/python, or build the "
+                     "missing: install with clients/python/install.sh, or build the "
                      "repository (build/python) or set $ENVDESIGN_PYTHON_TYPES")
     if __name__ == "__main__":
         sys.exit(MISSING_TYPES)
@@ -362,16 +367,23 @@ def design(spec_path, url=None, **options):
     """SPEC.md's result (a dict, as `envdesign design --json` prints it) of designing
     `spec_path` on the coordinator at `url` (None: $LCM_DEFAULT_URL, else LCM's default).
     A search a limit stopped gives status "best_found" and limit_reached true. `options` are
-    design_result()'s. Raises SpecError, UrlError or envdesign_auth.KeyFileError (exit code 2),
+    design_message()'s. Raises SpecError, UrlError or envdesign_auth.KeyFileError (exit code 2),
     RemoteError (its exit_code: 1, 2 or 4), OSError (the network)."""
     return design_result(spec_path, url, **options)[0]
 
 
-def design_result(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none",
-                  heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3,
-                  give_up_after_s=30, key_file=None):
+def design_result(spec_path, url=None, *args, **options):
     """(result dict, exit code): design() with SPEC.md's exit code (0, or 4 for a result a
     time limit or timeout stopped)."""
+    message, code = design_message(spec_path, url, *args, **options)
+    return result_json(message), code
+
+
+def design_message(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none",
+                   heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3,
+                   give_up_after_s=30, key_file=None, ranking=0, search="witness"):
+    """(design_result_t, exit code): the coordinator's result message itself, which
+    envdesign_text.result_text() prints as the C++ CLI does. Raises as design() does."""
     path = envdesign_auth.key_file_path(key_file)
     auth = envdesign_auth.Auth(envdesign_auth.load_key_file(path)) if path else None
     request = design_request_t()
@@ -382,6 +394,8 @@ def design_result(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prun
     request.time_limit_s, request.max_design_size = float(time_limit_s), int(max_design_size)
     request.prune = {"none": 0, "relevant": 1}[prune]
     request.heuristic = {"lmcut": 0, "hmax": 1, "blind": 2}[heuristic]
+    request.search = {"witness": 0, "exhaustive": 1}[search]
+    request.ranking = int(ranking)
     bus = UdpmBus(url or os.environ.get("LCM_DEFAULT_URL") or DEFAULT_URL, auth)
     try:
         return _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_up_after_s)
@@ -404,7 +418,7 @@ def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_
                     raise RemoteError(result.exit_code, result.error)
                 if cancelled and result.exit_code == 0:
                     result.exit_code = 4
-                return result_json(result), result.exit_code
+                return result, result.exit_code
             if message[0] == "ENVDESIGN_PROGRESS":
                 heard = now
         if timeout_s and now - start > timeout_s and not cancelled:
@@ -456,6 +470,9 @@ def main():
     parser.add_argument("--timeout", type=float, default=0)
     parser.add_argument("--time-limit", type=float, default=-1)
     parser.add_argument("--max-design-size", type=int, default=-1)
+    parser.add_argument("--ranking", type=int, default=0,
+                        help="list the N best designs, best first (0: the best alone)")
+    parser.add_argument("--search", choices=["witness", "exhaustive"], default="witness")
     parser.add_argument("--prune", choices=["none", "relevant"], default="none")
     parser.add_argument("--heuristic", choices=["lmcut", "hmax", "blind"], default="lmcut")
     parser.add_argument("--key-file", default=None,
@@ -468,9 +485,10 @@ def main():
                              f"{p.planners} planner(s)")
 
     try:
-        result, code = design_result(args.spec, args.connect, args.time_limit,
-                                     args.max_design_size, args.prune, args.heuristic,
-                                     args.timeout, progress, key_file=args.key_file)
+        result, code = design_message(args.spec, args.connect, args.time_limit,
+                                      args.max_design_size, args.prune, args.heuristic,
+                                      args.timeout, progress, key_file=args.key_file,
+                                      ranking=args.ranking, search=args.search)
     except SpecError as e:  # "FILE:LINE:COL: error: ..." as the other commands say it
         print(e, file=sys.stderr)
         return 2
@@ -489,11 +507,12 @@ def main():
     if sys.stderr.isatty():
         sys.stderr.write("\r\033[K")
     if args.json:
-        print(json.dumps(result, sort_keys=True))
+        print(json.dumps(result_json(result), sort_keys=True))
     else:
-        print(f"status: {result['status']}")
-        print(f"design: {{{', '.join(result['design'] or [])}}}")
-        print(f"objective: {result['objective']} {json.dumps(result['terms'])}")
+        sys.stdout.write(envdesign_text.result_text(result))
+    if code == 4:
+        print("envdesign-client: the time limit stopped the search; the design is the best found",
+              file=sys.stderr)
     return code
 
 

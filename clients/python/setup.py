@@ -46,5 +46,5 @@ class BuildWithTypes(build_py):
         subprocess.run([lcm_gen, "--python", "--ppath", self.build_lib] + types, check=True)
 
 
-setup(version=version(), py_modules=["envdesign_client", "envdesign_auth"],
+setup(version=version(), py_modules=["envdesign_client", "envdesign_auth", "envdesign_text"],
       cmdclass={"build_py": BuildWithTypes})

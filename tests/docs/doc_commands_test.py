@@ -36,6 +36,8 @@ ELSEWHERE = [
     ("export CYCLONEDDS_URI", "bridge_tests (the bridge and arrivals on DDS loopback)"),
     ("build/bin/envdesign-bridge", "bridge_tests (the bridge and arrivals on DDS loopback)"),
     ("build/bin/envdesign-arrivals", "bridge_tests (the bridge and arrivals on DDS loopback)"),
+    ("bash clients/python/install.sh", "e2e.PythonClientInstalled (runs it exactly as "
+                                       "clients/python/README.md writes it)"),
     ("python3 -m venv", "e2e.PythonClientInstalled"),
     ("/tmp/envdesign-venv/bin/pip install", "e2e.PythonClientInstalled "
                                             "test_installed_package_runs_the_readme_example"),

@@ -6,8 +6,10 @@ requests and results with a keyed cluster, an unsigned client unheard, the trail
 forged fragments against the reassembly's bounds."""
 import json
 import os
+import re
 import resource
 import shutil
+import socket
 import struct
 import subprocess
 import sys
@@ -27,14 +29,21 @@ SAME = ("status", "design", "objective", "terms", "baseline", "tasks",
         "limit_reached")
 
 
-def installer_python():
-    """A Python with setuptools, wheel and venv (Debian's python3-setuptools, python3-wheel,
-    python3-venv; deploy/install-deps.sh): what `pip install --no-build-isolation` needs."""
-    check = "import setuptools, wheel, venv"
-    for python in ("/usr/bin/python3", sys.executable):
-        if os.path.exists(python) and subprocess.run([python, "-c", check]).returncode == 0:
-            return python
-    raise AssertionError("no Python with setuptools and wheel: run deploy/install-deps.sh")
+def install_line():
+    """The install command of clients/python/README.md (its one indented line naming
+    install.sh); README.md and docs/ may name only this line."""
+    def lines(path):
+        with open(path) as f:
+            return [line.strip() for line in f if line.startswith("    ") and
+                    "clients/python/install.sh" in line and not line.strip().startswith("#")]
+    found = lines(os.path.join(ROOT, "clients", "python", "README.md"))
+    assert len(found) == 1, f"clients/python/README.md: {found}"
+    for doc in [os.path.join(ROOT, "README.md")] + [
+            os.path.join(d, f) for d, _, files in os.walk(os.path.join(ROOT, "docs"))
+            for f in files if f.endswith(".md")]:
+        for other in lines(doc):
+            assert other == found[0], f"{doc} installs with '{other}', not '{found[0]}'"
+    return found[0]
 
 
 def readme_example():
@@ -102,6 +111,104 @@ class PythonClient(unittest.TestCase):
                                     URL.replace(URL.split(":")[-1].split("?")[0], "19999"),
                                     give_up_after_s=1, resend_after_s=0.3)
         self.assertEqual(caught.exception.exit_code, 1)
+
+
+class SameTextAsTheCli(unittest.TestCase):
+    """envdesign-client prints what the C++ CLI prints, byte for byte, on every example: its
+    output against `envdesign watch` on the same bus, which prints each result it hears with
+    the CLI's own formatter (result_text), so both format the very message the coordinator
+    sent (a second run's counts, e.g. break-even's designs evaluated in full, may differ)."""
+    url = URL.replace(URL.split(":")[-1].split("?")[0], str(21001 + (os.getpid() % 10000) * 2))
+    CASES = [["examples/restaurant/a-one-task-t1.textproto"],
+             ["examples/restaurant/b-two-tasks-t1.textproto"],
+             ["examples/restaurant/c-two-tasks-t10.textproto"],
+             ["examples/restaurant/c-two-tasks-t10.textproto", "--ranking", "3"],
+             ["examples/restaurant/c-two-tasks-t10-explaining.textproto"],
+             ["examples/restaurant/d-cost-optimal-t10.textproto"],
+             ["examples/blocksworld/design.textproto"],
+             ["examples/blocksworld/design.textproto", "--max-design-size", "1",
+              "--search", "exhaustive"]]
+
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp()
+        cls.cluster = ["bash", os.path.join(ROOT, "deploy", "cluster.sh")]
+        cls.env = dict(os.environ, ENVDESIGN_BIN=os.path.join(BUILD, "bin"))
+        subprocess.run(cls.cluster + ["start", "--planners", "2", "--lcm-url", cls.url, "--dir",
+                                      os.path.join(cls.work, "cluster")], check=True, env=cls.env)
+        cls.watch_out = open(os.path.join(cls.work, "watch.txt"), "w+")
+        cls.watch = subprocess.Popen([os.path.join(BUILD, "bin", "envdesign"), "watch",
+                                      "--connect", cls.url, "--status"], stdout=cls.watch_out)
+        while "status coordinator" not in cls.watched():  # it hears the bus
+            time.sleep(0.1)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.watch.terminate()
+        cls.watch.wait()
+        cls.watch_out.close()
+        subprocess.run(cls.cluster + ["stop", "--dir", os.path.join(cls.work, "cluster")],
+                       env=cls.env)
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    @classmethod
+    def watched(cls):
+        with open(cls.watch_out.name) as f:
+            return f.read()
+
+    def watched_result(self, client):
+        """The text `envdesign watch` printed for the result to `client`."""
+        for _ in range(50):
+            lines = self.watched().splitlines(keepends=True)
+            header = [i for i, line in enumerate(lines) if line.startswith(f"result {client}#")]
+            if header:
+                block = []
+                for line in lines[header[0] + 1:]:
+                    if line.startswith(("result ", "progress ", "status ", "distribution ")):
+                        break
+                    block.append(line)
+                return "".join(block)
+            time.sleep(0.1)
+        self.fail(f"envdesign watch printed no result for {client}")
+
+    def run_python(self, args):
+        """(output, envdesign watch's text of the same result) of envdesign-client `args`."""
+        client = subprocess.Popen([sys.executable,
+                                   os.path.join(ROOT, "clients", "python", "envdesign_client.py"),
+                                   *args, "--connect", self.url], cwd=ROOT,
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        out, err = client.communicate(timeout=120)
+        self.assertEqual(client.returncode, 0, err)
+        return out, self.watched_result(f"python-client/{socket.gethostname()}/{client.pid}")
+
+    def test_every_example_prints_what_the_cli_prints(self):
+        for args in self.CASES:
+            with self.subTest(args=" ".join(args)):
+                out, cli_text = self.run_python(args)
+                self.assertEqual(out, cli_text)
+
+    def test_the_text_carries_the_answer(self):
+        """The restaurant (c): the numbers a reader takes from it (docs/concepts.md), rounded
+        as the CLI rounds them, not the JSON's float noise; the C++ CLI's own run opens with
+        the same three lines."""
+        out, _ = self.run_python(["examples/restaurant/c-two-tasks-t10.textproto",
+                                  "--ranking", "3"])
+        lines = out.splitlines()
+        self.assertEqual(lines[:3], [
+            "status: optimal", "design: {barrier-00-01, barrier-10-11}",
+            "objective: 85.26 = 6.513 inexplicability (1 x 6.513) + 60 design cost (30 x 2) + "
+            "18.75 robot cost (0.25 x 75)"])
+        for expected in ("value of each chosen modification (the objective without it):",
+                         "break-even (among the ", "ranking:",
+                         "  1. 85.26  {barrier-00-01, barrier-10-11}"):
+            self.assertTrue(any(line.startswith(expected) for line in lines), expected)
+        self.assertIsNone(re.search(r"[0-9]\.[0-9]{5}", out))  # no float noise
+        cli = subprocess.run([os.path.join(BUILD, "bin", "envdesign"), "design",
+                              "examples/restaurant/c-two-tasks-t10.textproto", "--ranking", "3",
+                              "--connect", self.url], cwd=ROOT, capture_output=True, text=True,
+                             timeout=120)
+        self.assertEqual(cli.returncode, 0, cli.stderr)
+        self.assertEqual(cli.stdout.splitlines()[:3], lines[:3])
 
 
 class PythonClientWithKey(unittest.TestCase):
@@ -173,18 +280,22 @@ class InstalledPackage(unittest.TestCase):
                        env=cls.env)
         shutil.rmtree(cls.work, ignore_errors=True)
 
-    def test_installed_package_runs_the_readme_example(self):
-        """pip installs clients/python offline into a fresh venv (types included); the README's
-        example and the envdesign-client command work there, and a bad URL is one line, exit 2."""
-        python = installer_python()
-        venv = os.path.join(self.work, "venv")
-        subprocess.run([python, "-m", "venv", "--system-site-packages", venv], check=True)
-        pip = subprocess.run([os.path.join(venv, "bin", "pip"), "install", "--no-build-isolation",
-                              "--no-index", os.path.join(ROOT, "clients", "python")],
-                             capture_output=True, text=True)
-        self.assertEqual(pip.returncode, 0, pip.stdout + pip.stderr)
-        clean = dict(os.environ)
+    def test_install_line_as_written_then_the_readme_example(self):
+        """The README's install line, run as written from the repository (HOME a scratch
+        folder: the venv goes to its ~/.local/share/envdesign/venv), offline; there the
+        README's example and the envdesign-client command work, without the build's types,
+        and a bad URL is one line, exit 2."""
+        line = install_line()
+        self.assertEqual(line, "bash clients/python/install.sh")
+        home = os.path.join(self.work, "home")
+        os.makedirs(home)
+        clean = dict(os.environ, HOME=home)
         clean.pop("ENVDESIGN_PYTHON_TYPES", None)  # the installed types, not the build's
+        install = subprocess.run(line, shell=True, cwd=ROOT, env=clean, capture_output=True,
+                                 text=True, timeout=300)
+        self.assertEqual(install.returncode, 0, install.stdout + install.stderr)
+        venv = os.path.join(home, ".local", "share", "envdesign", "venv")
+        self.assertIn(f"envdesign-client installed in {venv}", install.stdout)
         spec = os.path.join(ROOT, "examples", "restaurant", "c-two-tasks-t10.textproto")
         want = self_contained(spec)
         example = readme_example().replace("udpm://239.255.76.67:7667?ttl=0", self.url)
@@ -200,6 +311,12 @@ class InstalledPackage(unittest.TestCase):
                              capture_output=True, text=True, timeout=60)
         self.assertEqual(run.returncode, 0, run.stderr)
         self.assertEqual(json.loads(run.stdout)["objective"], want["objective"])
+        run = subprocess.run([command, spec, "--connect", self.url], env=clean,
+                             capture_output=True, text=True, timeout=60)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertTrue(run.stdout.startswith(
+            "status: optimal\ndesign: {barrier-00-01, barrier-10-11}\nobjective: 85.26 = "),
+            run.stdout)
         run = subprocess.run([command, spec, "--connect", "udpm://10.1.2.3:7667"], env=clean,
                              capture_output=True, text=True, timeout=60)
         self.assertEqual(run.returncode, 2)
