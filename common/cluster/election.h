@@ -7,8 +7,9 @@
 // coordinator with this one's own name is a peer like any other (a status is this one's own
 // only if its start and sender id are too), so two clusters started with the same --name on
 // one bus do not both answer: the later stands by and says why. A coordinator is
-//   DISCOVERING  for `discovery_s` after it starts: it takes requests but starts none, so
-//                that it hears the others before it works (the status period is 1 s);
+//   DISCOVERING  for `discovery_s` after it starts: it takes requests but starts none and
+//                says nothing to clients (its refusals wait: coordinator.h), so that it
+//                hears the others before it works or answers (the status period is 1 s);
 //   STANDBY      while it has heard an outranking coordinator within `takeover_after_s`: it
 //                takes no requests (the active one answers them), keeps its planner list
 //                warm from heartbeats, and drops what it had open when it steps down (the
