@@ -145,9 +145,17 @@ std::string y_axis(const std::vector<Line> &lines) {
     std::ostringstream gp;
     if (!std::isfinite(low))
         return "set yrange [0:1]\n";
-    if (low > 0 && high / low > 20)
-        gp << "set logscale y\nset yrange [" << low / 1.5 << ":" << high * 1.5 << "]\n";
-    else
+    if (low > 0 && high / low > 20) {
+        // Labels at 1, 2, 5 x 10^k: a reader (and a test) can tell the log axis by them.
+        gp << "set logscale y\nset yrange [" << low / 1.5 << ":" << high * 1.5 << "]\nset ytics (";
+        const char *sep = "";
+        for (double decade = std::pow(10, std::floor(std::log10(low / 1.5))); decade <= high * 1.5;
+             decade *= 10)
+            for (double step : {1, 2, 5})
+                if (step * decade >= low / 1.5 && step * decade <= high * 1.5)
+                    gp << sep << step * decade, sep = ", ";
+        gp << ")\n";
+    } else
         gp << "set yrange [" << std::min(0.0, low * 1.1) << ":" << std::max(high * 1.1, 1e-9)
            << "]\n";
     return gp.str();
@@ -218,7 +226,7 @@ std::string lines_plot(const envdesign::design_result_t &r, bool by_horizon) {
     }
     gp << "set multiplot\nset lmargin 12\nset rmargin 44\n"
        << "set origin 0,0.36\nset size 1,0.64\nunset xlabel\n"
-       << panel(rivals, "d") << "unset label 1001\nunset logscale y\n"
+       << panel(rivals, "d") << "unset label 1001\nunset logscale y\nset ytics autofreq\n"
        << "set origin 0,0\nset size 1,0.38\nset ylabel 'empty design'\nset xlabel "
        << quoted(x_label) << "\n"
        << panel(empty, "e") << "unset multiplot\n";
