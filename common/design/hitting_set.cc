@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -29,52 +30,247 @@ using Model = std::unique_ptr<Cbc_Model, ModelDeleter>;
 
 } // namespace
 
+// The integer program being written: columns (binary unless said) and rows, with every
+// number checked against what the solver takes.
+class HittingSetMaster::Program {
+public:
+    Program() : model_(Cbc_newModel()) {}
+    Cbc_Model *model() const { return model_.get(); }
+    bool in_range() const { return in_range_; }
+    void check(double v) { in_range_ = in_range_ && solver_number(v); }
+
+    int column(double objective, double upper = 1.0, bool binary = true) {
+        check(objective);
+        check(upper);
+        Cbc_addCol(model(), "", 0.0, upper, objective, binary ? 1 : 0, 0, nullptr, nullptr);
+        return columns_++;
+    }
+    // sum of coefs[i] * column cols[i]  (sense: 'L' <=, 'G' >=)  rhs
+    void row(const std::vector<int> &cols, const std::vector<double> &coefs, char sense,
+             double rhs) {
+        for (double c : coefs)
+            check(c);
+        check(rhs);
+        Cbc_addRow(model(), "", static_cast<int>(cols.size()), cols.data(), coefs.data(), sense,
+                   rhs);
+    }
+
+private:
+    Model model_;
+    int columns_ = 0;
+    bool in_range_ = true;
+};
+
+namespace {
+
+// The solver's verdict: NONE only on its proven lower bound, never on its incumbent alone.
+HittingSetMaster::Answer read_answer(Cbc_Model *m, int n, double offset, double cutoff) {
+    HittingSetMaster::Answer answer;
+    if (Cbc_isProvenInfeasible(m)) {
+        answer.status = HittingSetMaster::Answer::NONE;
+        return answer;
+    }
+    if (!Cbc_isProvenOptimal(m))
+        return answer; // FAILED: a limit, or the solver gave up
+    double lower = Cbc_getBestPossibleObjValue(m) + offset;
+    if (!Cbc_bestSolution(m) || Cbc_getObjValue(m) + offset > cutoff) {
+        if (lower > cutoff)
+            answer.status = HittingSetMaster::Answer::NONE;
+        return answer; // else FAILED: the two disagree within the solver's tolerance
+    }
+    const double *x = Cbc_getColSolution(m);
+    for (int i = 0; i < n; ++i)
+        if (x[i] > 0.5)
+            answer.design.push_back(i);
+    answer.bound = std::min(lower, Cbc_getObjValue(m) + offset);
+    answer.status = HittingSetMaster::Answer::FOUND;
+    return answer;
+}
+
+} // namespace
+
 HittingSetMaster::HittingSetMaster(const DesignProblem &problem, const SupersetBound &plans,
                                    RootFacts root, int max_size)
     : problem_(problem), plans_(plans), root_(std::move(root)), max_size_(max_size) {
     constant_ = objective_lower_bound(problem, 0.0, root_.settled, root_.robot_bounds);
+    root_.lower_floors.resize(problem.tasks.size());
+    root_.lower_robot_floors.resize(problem.tasks.size());
 }
 
 double HittingSetMaster::margin(double best) { return std::max(1e-4, 1e-5 * std::abs(best)); }
 
-// The IE term of `task`, above its least, when the human's optimum is at most `human_optimum`.
-double HittingSetMaster::level_value(int task, double human_optimum) const {
+// The IE term of `task`, above its least, when c_H(pi) is at least `floor` and the human's
+// optimum at most `human_optimum`.
+double HittingSetMaster::level_value(int task, double floor, double human_optimum) const {
     const ObjectiveWeights &w = problem_.weights;
     double weight = w.alpha * discounted_horizon(w) * problem_.tasks[task].probability;
-    double gap = root_.floor[task] - human_optimum;
+    double gap = floor - human_optimum;
     if (gap <= 0)
         return 0;
     double least = least_ie(w);
     return weight * ((least == 0 ? gap : std::exp(gap)) - least);
 }
 
-// Per task that a design can change, its known plans cheaper than the floor, grouped by
-// cost; the levels end at the first plan nothing breaks.
-std::vector<std::vector<HittingSetMaster::Level>> HittingSetMaster::levels() const {
-    int tasks = static_cast<int>(problem_.tasks.size());
-    std::vector<std::vector<Level>> out(tasks);
-    for (int t = 0; t < tasks; ++t) {
-        if (problem_.tasks[t].probability <= 0 || root_.settled[t])
-            continue;
-        for (const PooledPlan &plan : plans_.plans(t)) {
-            if (plan.cost >= root_.floor[t])
-                break;
-            if (!plan.needs.empty())
-                continue; // valid only with modifications added everywhere: not used
-            if (out[t].empty() || out[t].back().cost != plan.cost)
-                out[t].push_back(Level{plan.cost, 0, {}});
-            if (plan.breakers.empty()) {
-                out[t].back().breakable = false;
-                break;
-            }
-            out[t].back().breakers.push_back(&plan.breakers);
+// The task's known plans cheaper than its floor, grouped by cost; the levels end at the
+// first plan nothing breaks (no breaker, valid without any adding modification).
+std::vector<HittingSetMaster::Level> HittingSetMaster::levels(int t) const {
+    std::vector<Level> out;
+    if (problem_.tasks[t].probability <= 0 || root_.settled[t])
+        return out;
+    double floor = root_.floor[t];
+    for (const PooledPlan &plan : plans_.plans(t)) {
+        if (plan.cost >= floor)
+            break;
+        if (out.empty() || out.back().cost != plan.cost)
+            out.push_back(Level{plan.cost, 0, {}});
+        if (plan.breakers.empty() && plan.needs.empty()) {
+            out.back().breakable = false;
+            break;
         }
-        for (std::size_t j = 0; j < out[t].size(); ++j) {
-            double next = j + 1 < out[t].size() ? level_value(t, out[t][j + 1].cost) : 0.0;
-            out[t][j].saving = level_value(t, out[t][j].cost) - next;
-        }
+        out.back().plans.push_back(&plan);
+    }
+    for (std::size_t j = 0; j < out.size(); ++j) {
+        double next = j + 1 < out.size() ? level_value(t, floor, out[j + 1].cost) : 0.0;
+        out[j].saving = level_value(t, floor, out[j].cost) - next;
     }
     return out;
+}
+
+// Columns y_j for the breakable levels (objective coefficients `objective`), with
+// y_j <= y_(j-1) and, per plan of level j, y_j <= its breakers + its needs left out.
+std::vector<int> HittingSetMaster::add_plan_levels(Program &program,
+                                                   const std::vector<Level> &levels,
+                                                   const std::vector<double> &objective) const {
+    std::vector<int> y;
+    for (std::size_t j = 0; j < levels.size() && levels[j].breakable; ++j) {
+        y.push_back(program.column(objective[j]));
+        if (j > 0)
+            program.row({y[j], y[j - 1]}, {1.0, -1.0}, 'L', 0.0);
+        for (const PooledPlan *plan : levels[j].plans) {
+            std::vector<int> cols{y[j]};
+            std::vector<double> coefs{1.0};
+            for (int b : plan->breakers)
+                cols.push_back(b), coefs.push_back(-1.0);
+            for (int n : plan->needs)
+                cols.push_back(n), coefs.push_back(1.0);
+            program.row(cols, coefs, 'L', static_cast<double>(plan->needs.size()));
+        }
+    }
+    return y;
+}
+
+// A task whose floor no design lowers: its term is top - sum of savings y_j. Returns the
+// top, capped, which goes to the objective's constant.
+double HittingSetMaster::add_fixed_floor(Program &program, const std::vector<Level> &levels,
+                                         double cap) const {
+    double top = 0; // the task's term with nothing broken
+    for (const Level &level : levels)
+        top += level.saving;
+    double capped = std::min(top, cap);
+    double remaining = capped; // savings beyond the cap are dropped from the top down
+    std::vector<double> savings;
+    for (std::size_t j = 0; j < levels.size() && levels[j].breakable; ++j) {
+        double above = top - levels[j].saving; // the term once this level is broken
+        top = above;
+        double saving = remaining - std::min(above, cap);
+        remaining -= saving;
+        savings.push_back(-saving);
+    }
+    add_plan_levels(program, levels, savings);
+    return capped;
+}
+
+// A task whose floor falls when adding modifications are chosen: term T_t >= V(F_k, D_j)
+// (1 - u_(k+1) - y_(j+1)) for every floor level k and plan level j (hitting_set.h).
+void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vector<Level> &levels,
+                                         double cap) const {
+    std::vector<int> y = add_plan_levels(program, levels, std::vector<double>(levels.size(), 0.0));
+    std::vector<double> floors{root_.floor[t]}; // F_0 > F_1 > ...
+    for (const UseFloor &f : root_.lower_floors[t])
+        if (f.cost < root_.floor[t])
+            floors.push_back(f.cost);
+    std::sort(floors.begin() + 1, floors.end(), std::greater<>());
+    floors.erase(std::unique(floors.begin(), floors.end()), floors.end());
+    std::vector<int> u{-1}; // u_0 = 1: the floor is at most F_0 in every design
+    for (std::size_t k = 1; k < floors.size(); ++k) {
+        u.push_back(program.column(0.0));
+        std::vector<int> cols{u[k]};
+        std::vector<double> coefs{1.0};
+        for (const UseFloor &f : root_.lower_floors[t])
+            if (f.cost <= floors[k])
+                cols.push_back(f.modification), coefs.push_back(-1.0);
+        program.row(cols, coefs, 'L', 0.0);
+        if (k > 1)
+            program.row({u[k], u[k - 1]}, {1.0, -1.0}, 'L', 0.0);
+    }
+    int term = program.column(1.0, cap, false);
+    for (std::size_t k = 0; k < floors.size(); ++k) {
+        for (std::size_t j = 0; j <= y.size(); ++j) {
+            if (j >= levels.size())
+                break; // every level broken: no plan below the floor is known
+            double value = std::min(level_value(t, floors[k], levels[j].cost), cap);
+            if (value <= 0)
+                continue;
+            std::vector<int> cols{term};
+            std::vector<double> coefs{1.0};
+            if (k + 1 < floors.size())
+                cols.push_back(u[k + 1]), coefs.push_back(value);
+            if (j < y.size())
+                cols.push_back(y[j]), coefs.push_back(value);
+            program.row(cols, coefs, 'G', value);
+        }
+    }
+}
+
+// A task whose robot floor c_R* falls when adding modifications are chosen: the constant
+// counts it at c_R* with no modification, and v_k (nested, v_k <= the x_e that bring it to
+// R_k) saves kappa T p (R_(k-1) - R_k).
+void HittingSetMaster::add_falling_robot_floor(Program &program, int t) const {
+    const ObjectiveWeights &w = problem_.weights;
+    if (!root_.robot_bounds[t] || root_.settled[t] || problem_.tasks[t].probability <= 0)
+        return;
+    std::vector<double> floors{*root_.robot_bounds[t]}; // R_0 > R_1 > ...
+    for (const UseFloor &f : root_.lower_robot_floors[t])
+        if (f.cost < floors[0])
+            floors.push_back(f.cost);
+    std::sort(floors.begin() + 1, floors.end(), std::greater<>());
+    floors.erase(std::unique(floors.begin(), floors.end()), floors.end());
+    double weight = w.kappa * w.horizon * problem_.tasks[t].probability;
+    int previous = -1;
+    for (std::size_t k = 1; k < floors.size(); ++k) {
+        int v = program.column(-weight * (floors[k - 1] - floors[k]));
+        std::vector<int> cols{v};
+        std::vector<double> coefs{1.0};
+        for (const UseFloor &f : root_.lower_robot_floors[t])
+            if (f.cost <= floors[k])
+                cols.push_back(f.modification), coefs.push_back(-1.0);
+        program.row(cols, coefs, 'L', 0.0);
+        if (previous >= 0)
+            program.row({v, previous}, {1.0, -1.0}, 'L', 0.0);
+        previous = v;
+    }
+}
+
+// Every cone is left: drop one of its design's modifications or add an escape.
+void HittingSetMaster::exclude(Program &program, const std::vector<Cone> &excluded) const {
+    int n = static_cast<int>(problem_.modifications.size());
+    for (const Cone &cone : excluded) {
+        std::vector<int> cols;
+        std::vector<double> coefs;
+        for (int i = 0; i < n; ++i) {
+            if (contains(cone.design, i))
+                cols.push_back(i), coefs.push_back(-1.0);
+            else if (!cone.escapes || contains(*cone.escapes, i))
+                cols.push_back(i), coefs.push_back(1.0);
+        }
+        program.row(cols, coefs, 'G', 1.0 - static_cast<double>(cone.design.size()));
+    }
+    if (max_size_ > 0 && max_size_ < n) {
+        std::vector<int> cols(n);
+        for (int i = 0; i < n; ++i)
+            cols[i] = i;
+        program.row(cols, std::vector<double>(n, 1.0), 'L', max_size_);
+    }
 }
 
 HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &excluded, double cutoff,
@@ -87,9 +283,8 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
             answer.status = Answer::NONE;
         return answer;
     }
-    bool in_range = solver_number(cutoff) || cutoff == INF;
-    Model model(Cbc_newModel());
-    Cbc_Model *m = model.get();
+    Program program;
+    Cbc_Model *m = program.model();
     Cbc_setLogLevel(m, 0);
     // Tight tolerances: CBC's defaults accept an incumbent 1e-5 (absolute) above the optimum,
     // as wide as the margin on small objectives.
@@ -99,99 +294,32 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
     Cbc_setAllowableFractionGap(m, 0.0);
     if (deadline.limited())
         Cbc_setMaximumSeconds(m, deadline.remaining_seconds());
-    auto add_column = [&](double objective) {
-        in_range = in_range && solver_number(objective);
-        Cbc_addCol(m, "", 0.0, 1.0, objective, 1, 0, nullptr, nullptr);
-    };
     for (int i = 0; i < n; ++i)
-        add_column(w.beta * problem_.modifications[i].cost);
+        program.column(w.beta * problem_.modifications[i].cost);
     // A term above this makes a design worse than `cutoff` whatever the rest: capping the
-    // savings there keeps the program's numbers small and changes no design below it.
+    // terms there keeps the program's numbers small and changes no design below it.
     double cap = std::max(0.0, cutoff - constant_) + 1.0;
     double offset = constant_;
-    std::vector<int> cols;
-    std::vector<double> coefs;
-    int col = n;
-    for (const auto &task_levels : levels()) {
-        double top = 0; // the task's term with nothing broken, capped
-        for (const Level &level : task_levels)
-            top += level.saving;
-        double capped = std::min(top, cap);
-        offset += capped;
-        double remaining = capped; // savings beyond the cap are dropped from the top down
-        int previous = -1;
-        for (std::size_t j = 0; j < task_levels.size() && task_levels[j].breakable; ++j) {
-            const Level &level = task_levels[j];
-            double above = top - level.saving; // the term once this level is broken
-            top = above;
-            double saving = remaining - std::min(above, cap);
-            remaining -= saving;
-            add_column(-saving);
-            int y = col++;
-            if (previous >= 0) { // y_j <= y_(j-1)
-                int both[2] = {y, previous};
-                double signs[2] = {1.0, -1.0};
-                Cbc_addRow(m, "", 2, both, signs, 'L', 0.0);
-            }
-            for (const auto *breakers : level.breakers) { // y_j <= sum of its breakers
-                cols.assign(1, y);
-                coefs.assign(1, 1.0);
-                for (int b : *breakers)
-                    cols.push_back(b), coefs.push_back(-1.0);
-                Cbc_addRow(m, "", static_cast<int>(cols.size()), cols.data(), coefs.data(), 'L',
-                           0.0);
-            }
-            previous = y;
-        }
+    for (int t = 0; t < static_cast<int>(problem_.tasks.size()); ++t) {
+        add_falling_robot_floor(program, t);
+        std::vector<Level> task_levels = levels(t);
+        if (task_levels.empty())
+            continue;
+        if (root_.lower_floors[t].empty())
+            offset += add_fixed_floor(program, task_levels, cap);
+        else
+            add_falling_floor(program, t, task_levels, cap);
     }
-    for (const Cone &cone : excluded) { // drop one of its modifications or add an escape
-        cols.clear();
-        coefs.clear();
-        for (int i = 0; i < n; ++i) {
-            if (contains(cone.design, i))
-                cols.push_back(i), coefs.push_back(-1.0);
-            else if (!cone.escapes || contains(*cone.escapes, i))
-                cols.push_back(i), coefs.push_back(1.0);
-        }
-        Cbc_addRow(m, "", static_cast<int>(cols.size()), cols.data(), coefs.data(), 'G',
-                   1.0 - static_cast<double>(cone.design.size()));
-    }
-    if (max_size_ > 0 && max_size_ < n) {
-        cols.clear();
-        coefs.assign(n, 1.0);
-        for (int i = 0; i < n; ++i)
-            cols.push_back(i);
-        Cbc_addRow(m, "", n, cols.data(), coefs.data(), 'L', max_size_);
-    }
-    in_range = in_range && solver_number(offset);
-    if (!in_range) {
+    exclude(program, excluded);
+    program.check(offset);
+    if (!program.in_range() || !(solver_number(cutoff) || cutoff == INF)) {
         answer.out_of_range = true;
         return answer; // FAILED
     }
     if (std::isfinite(cutoff)) // INF: a ranking not full yet, every design is wanted
         Cbc_setCutoff(m, cutoff - offset + margin(cutoff));
     Cbc_solve(m);
-
-    if (Cbc_isProvenInfeasible(m)) {
-        answer.status = Answer::NONE;
-        return answer;
-    }
-    if (!Cbc_isProvenOptimal(m))
-        return answer; // FAILED: a limit, or the solver gave up
-    // NONE only on the solver's proven lower bound, never on its incumbent alone.
-    double lower = Cbc_getBestPossibleObjValue(m) + offset;
-    if (!Cbc_bestSolution(m) || Cbc_getObjValue(m) + offset > cutoff) {
-        if (lower > cutoff)
-            answer.status = Answer::NONE;
-        return answer; // else FAILED: the two disagree within the solver's tolerance
-    }
-    const double *x = Cbc_getColSolution(m);
-    for (int i = 0; i < n; ++i)
-        if (x[i] > 0.5)
-            answer.design.push_back(i);
-    answer.bound = std::min(lower, Cbc_getObjValue(m) + offset);
-    answer.status = Answer::FOUND;
-    return answer;
+    return read_answer(m, n, offset, cutoff);
 }
 
 } // namespace envdesign::design::witness

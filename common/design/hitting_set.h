@@ -12,14 +12,25 @@
 //   minimise  sum_m beta c_m x_m + sum_t sum_j -delta_tj y_tj   (+ a constant)
 //   y_tj <= y_t(j-1),  y_tj <= sum of x_m over the breakers of each plan at level j,
 // where y_tj = 1 says task t's plans up to cost level j are all broken, and delta_tj is
-// what that saves. The phase (witness_search.cc) evaluates the design the program picks,
-// learns the plans that refute its relaxed value, and excludes it; it stops when no design
-// left has a relaxed objective within a margin of the best real one: then every design is
-// either evaluated or provably worse, and the best evaluated one is optimal, ties included.
-// The program is solved to optimality with tight tolerances (integrality 1e-9, no allowed
-// gap, a cutoff increment of 1e-10), and NONE rests on the solver's proven lower bound; the
-// margin (1e-5 relative, at least 1e-4) absorbs what is left of its tolerances.
+// what that saves.
+// With modifications that add plans (witness.h: adding) the same holds with two changes.
+// A pooled plan learnt under adding modifications is valid only where they are all chosen:
+// its row gets + sum of (1 - x_n) over those `needs`. And a task's floor falls to F_k once
+// a modification e with L(t, e) <= F_k is chosen (addition_floors.h): binary u_tk says so
+// (u_tk <= sum of those x_e), and the task's term is a variable T_t with, for every floor
+// level k and plan level j, T_t >= V(F_k, D_j) (1 - u_t(k+1) - y_t(j+1)), V the IE term
+// above its least when the floor is F_k and the human's optimum at most D_j. The robot's
+// cost falls the same way from c_R* with no modification: nested binaries v_tk <= sum of
+// the x_e that bring it to R_k, each saving kappa T p_t (R_(k-1) - R_k). The phase
+// (witness_search.cc) evaluates the design the program picks, learns the plans that refute its
+// relaxed value, and excludes it; it stops when no design left has a relaxed objective within a
+// margin of the best real one: then every design is either evaluated or provably worse, and the
+// best evaluated one is optimal, ties included. The program is solved to optimality with tight
+// tolerances (integrality 1e-9, no allowed gap, a cutoff increment of 1e-10), and NONE rests on the
+// solver's proven lower bound; the margin (1e-5 relative, at least 1e-4) absorbs what is left of
+// its tolerances.
 
+#include "design/addition_floors.h"
 #include "design/configuration.h"
 #include "design/deadline.h"
 #include "design/design_problem.h"
@@ -35,7 +46,12 @@ namespace envdesign::design::witness {
 // What holds for every design, read from the empty design's evaluation.
 struct RootFacts {
     std::vector<double> floor; // per task, c_H(pi) with no modification
-    std::vector<std::optional<double>> robot_bounds;
+    // Per task, the adding modifications that can bring c_H(pi) to at most `cost`
+    // (addition_floors.h): a design with none of them keeps the floor above.
+    std::vector<std::vector<UseFloor>> lower_floors;
+    std::vector<std::optional<double>> robot_bounds; // per task, c_R* with no modification
+    // Per task, the adding modifications that can bring c_R* to at most `cost`.
+    std::vector<std::vector<UseFloor>> lower_robot_floors;
     std::vector<const TaskExplicability *> settled; // tasks no modification can change
 };
 
@@ -70,11 +86,19 @@ private:
     struct Level {
         double cost;   // the plans' cost at this level
         double saving; // what breaking them all (and those below) saves
-        std::vector<const std::vector<int> *> breakers;
+        std::vector<const PooledPlan *> plans;
         bool breakable = true;
     };
-    std::vector<std::vector<Level>> levels() const;
-    double level_value(int task, double human_optimum) const;
+    class Program;
+    std::vector<Level> levels(int task) const;
+    double level_value(int task, double floor, double human_optimum) const;
+    double add_fixed_floor(Program &program, const std::vector<Level> &levels, double cap) const;
+    void add_falling_floor(Program &program, int task, const std::vector<Level> &levels,
+                           double cap) const;
+    std::vector<int> add_plan_levels(Program &program, const std::vector<Level> &levels,
+                                     const std::vector<double> &objective) const;
+    void add_falling_robot_floor(Program &program, int task) const;
+    void exclude(Program &program, const std::vector<Cone> &excluded) const;
 
     const DesignProblem &problem_;
     const SupersetBound &plans_;

@@ -145,14 +145,17 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
                 SpecLiteral l = literal_of(edit.expression);
                 bool fresh = u.private_fresh(l.predicate);
                 bool restricting = true;
+                bool adding = false; // only adds plans (the mirror of the rules above)
                 std::string schema = kPrefix[side] + std::string("schema|") + edit.action;
                 switch (edit.kind) {
                 case EditKind::ADD_INIT:
                     restricting = fresh || !u.positive.count(l.predicate);
+                    adding = !u.negative.count(l.predicate);
                     by_key_[literal_key(side, true, l.atom)].push_back(i);
                     break;
                 case EditKind::REMOVE_INIT:
                     restricting = fresh || !u.negative.count(l.predicate);
+                    adding = !u.positive.count(l.predicate);
                     by_key_[literal_key(side, false, l.atom)].push_back(i);
                     break;
                 case EditKind::ADD_GOAL:
@@ -162,8 +165,10 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
                 case EditKind::REMOVE_GOAL:
                 case EditKind::REMOVE_PRECONDITION:
                     restricting = false;
+                    adding = true;
                     break;
                 case EditKind::ADD_PREDICATE:
+                    adding = true;
                     break;
                 case EditKind::ADD_PRECONDITION:
                     by_key_[schema].push_back(i);
@@ -176,6 +181,8 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
                     bool fewer = l.negated == (edit.kind == EditKind::ADD_EFFECT);
                     restricting = fresh || (fewer ? !u.negative.count(l.predicate)
                                                   : !u.positive.count(l.predicate));
+                    adding =
+                        fewer ? !u.positive.count(l.predicate) : !u.negative.count(l.predicate);
                     by_key_[schema].push_back(i);
                     break;
                 }
@@ -190,6 +197,7 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
                     c.edits_robot = true;
                 if (!restricting && side == ROBOT)
                     c.robot_restricting = false;
+                c.adding = c.adding && adding;
                 if (!restricting && c.restricting) {
                     c.restricting = false;
                     c.why_not = edit_kind_name(edit.kind) + " " + edit.expression.to_string() +

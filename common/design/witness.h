@@ -46,7 +46,11 @@ struct ModificationClass {
     bool restricting = true;       // every edit is restricting
     bool robot_restricting = true; // every edit of the robot's model is
     bool edits_robot = false;      // it edits the robot's model at all
-    std::string why_not;           // the first edit that is not restricting, for the result
+    // Every edit only adds plans and never makes one dearer, whatever else is added (the
+    // mirror of the restricting rules: more atoms of a predicate nothing reads negatively,
+    // fewer of one nothing reads positively, a precondition or goal removed). A new lane.
+    bool adding = true;
+    std::string why_not; // the first edit that is not restricting, for the result
 };
 
 // One TouchIndex serves one search (it memoizes, and is not thread-safe).

@@ -58,8 +58,8 @@ void SupersetBound::learn(const Configuration &c, int t, const TaskExplicability
         for (int m : *touching)
             if (!contains(c, m))
                 p.breakers.push_back(m);
-        for (int m : always_)
-            if (!contains(c, m))
+        for (int m : always_) // an adding modification never breaks a plan
+            if (!contains(c, m) && !index_.of(m).adding)
                 p.breakers.push_back(m);
         std::sort(p.breakers.begin(), p.breakers.end());
         p.breakers.erase(std::unique(p.breakers.begin(), p.breakers.end()), p.breakers.end());

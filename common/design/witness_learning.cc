@@ -1,5 +1,6 @@
 #include "design/witness_learning.h"
 
+#include "design/addition_floors.h"
 #include "design/hitting_set.h"
 
 #include <algorithm>
@@ -31,7 +32,7 @@ void DesignLearner::evaluated(const Node &node) {
 // plans share); the human's optimal plan there is either another cheaper one, which joins
 // the pool, or none, and then breaking the known ones is enough.
 void DesignLearner::probe_shortcuts() {
-    if (!bound_.always().empty() || !result_.baseline)
+    if (!only_adding_added_everywhere() || !result_.baseline)
         return;
     std::set<int> active;
     for (int t = 0; t < tasks_; ++t)
@@ -134,34 +135,64 @@ void DesignLearner::consider(const Configuration &design, const std::vector<Reco
     considered_.push_back(cone_of(problem_, bound_, design, records));
 }
 
-// The relaxation of hitting_set.h holds when every modification is restricting and of
-// non-negative cost (no modification is added everywhere), the weights are non-negative
-// and the empty design's objective is finite (its floors are known). Its floors are floors on
-// the most explicable plan's human cost, so it applies to EXPLICABLE robots only
-// (witness_bound.h: floors_hold).
+// Whether every modification added everywhere only adds plans and costs nothing less than
+// zero (the others are restricting: hitting_set.h).
+bool DesignLearner::only_adding_added_everywhere() const {
+    return std::all_of(bound_.always().begin(), bound_.always().end(), [&](int m) {
+        return index_.of(m).adding && problem_.weights.beta * problem_.modifications[m].cost >= 0;
+    });
+}
+
+// The relaxation of hitting_set.h holds when every modification is restricting or adding,
+// of non-negative cost, the weights are non-negative and the empty design's objective is
+// finite (its floors are known). Its floors are floors on the most explicable plan's human
+// cost, so it applies to EXPLICABLE robots only (witness_bound.h: floors_hold).
 bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
     return options_.hitting_sets && w.behaviour == RobotBehaviour::EXPLICABLE && root_ &&
            result_.best && std::isfinite(result_.best->objective.value) &&
-           bound_.always().empty() && w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 &&
+           only_adding_added_everywhere() && w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 &&
            result_.baseline && std::isfinite(result_.baseline->objective.value);
+}
+
+// The facts of hitting_set.h from the empty design, with the floors that adding
+// modifications can bring (addition_floors.h); nullopt when those cannot be computed.
+std::optional<RootFacts> DesignLearner::root_facts() {
+    RootFacts facts;
+    // Every modification is restricting or adding (applies()): the root's c_R* is a floor
+    // on the robot's cost except where an adding one lowers it (addition_floors.h).
+    for (int t = 0; t < tasks_; ++t) {
+        facts.floor.push_back(result_.baseline->tasks[t].human_plan_cost);
+        facts.robot_bounds.push_back(root_->robot_bounds[t]);
+    }
+    facts.lower_floors.resize(tasks_);
+    facts.lower_robot_floors.resize(tasks_);
+    if (!bound_.always().empty()) {
+        std::string why;
+        auto floors = addition_floors(problem_, bound_.always(), facts.floor, facts.robot_bounds,
+                                      options_.deadline, why);
+        if (!floors) {
+            result_.notes.push_back("the hitting-set phase was not used: " + why);
+            return std::nullopt;
+        }
+        facts.lower_floors = std::move(floors->below);
+        facts.lower_robot_floors = std::move(floors->robot_below);
+    }
+    for (int t = 0; t < tasks_; ++t) {
+        const Record &r = root_->tasks[t];
+        bool settled = r && r->touch.known && r->touch.all.empty() && facts.lower_floors[t].empty();
+        facts.settled.push_back(settled ? &r->evaluation : nullptr);
+    }
+    return facts;
 }
 
 bool DesignLearner::prove_by_hitting_sets() {
     if (!applies())
         return false;
-    RootFacts facts;
-    bool robot_monotone = true;
-    for (int m = 0; m < index_.size(); ++m)
-        robot_monotone = robot_monotone && index_.of(m).robot_restricting;
-    for (int t = 0; t < tasks_; ++t) {
-        const Record &r = root_->tasks[t];
-        facts.floor.push_back(result_.baseline->tasks[t].human_plan_cost);
-        facts.robot_bounds.push_back(robot_monotone ? root_->robot_bounds[t] : std::nullopt);
-        facts.settled.push_back(r && r->touch.known && r->touch.all.empty() ? &r->evaluation
-                                                                            : nullptr);
-    }
-    HittingSetMaster master(problem_, bound_, std::move(facts), options_.max_design_size);
+    auto facts = root_facts();
+    if (!facts)
+        return false;
+    HittingSetMaster master(problem_, bound_, std::move(*facts), options_.max_design_size);
     // Designs the evaluator answers without planning (stored from earlier searches of the
     // same models) teach their plans first, so a re-design after drift plans little.
     std::set<Configuration> seen;

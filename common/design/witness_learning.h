@@ -12,6 +12,7 @@
 #include "design/witness_bound.h"
 
 #include <functional>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -53,7 +54,9 @@ public:
     long long designs() const { return designs_; }
 
 private:
+    bool only_adding_added_everywhere() const;
     bool applies() const;
+    std::optional<RootFacts> root_facts();
     // `inherit`: look for its tasks among smaller evaluated designs first.
     bool evaluate(const Configuration &design, bool inherit = true);
     Record inherited(const Configuration &design, int task) const;

@@ -36,6 +36,7 @@
 #include "design/design_search.h"
 #include "design/explicability.h"
 #include "design/local_evaluator.h"
+#include "design/witness.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
@@ -119,6 +120,10 @@ const std::vector<std::string> RESTRICTING_KINDS = {
 const std::vector<std::string> OTHER_KINDS = {"new-passage",   "remove-precondition", "add-effect",
                                               "remove-effect", "remove-goal",         "unblock",
                                               "add-obstacle",  "fresh-split"};
+
+// Kinds that usually only add plans (witness.h: adding): a new lane, a rule relaxed.
+const std::vector<std::string> ADDING_KINDS = {
+    "new-passage", "remove-precondition", "unblock", "remove-goal", "add-effect", "remove-effect"};
 
 std::vector<std::string> all_kinds() {
     std::vector<std::string> kinds = RESTRICTING_KINDS;
@@ -299,9 +304,11 @@ enum class Target { HUMAN, ROBOT, BOTH };
 class Generator {
 public:
     // `restricting_only`: every modification restricting and of non-negative cost, and up
-    // to 9 of them (the witness search's hitting-set phase applies).
-    explicit Generator(unsigned seed, bool restricting_only = false)
-        : seed_(seed), restricting_only_(restricting_only), r_(seed) {}
+    // to 9 of them (the witness search's hitting-set phase applies). `adding_too`: the same
+    // with modifications that add plans among them (the phase applies when each adds only).
+    explicit Generator(unsigned seed, bool restricting_only = false, bool adding_too = false)
+        : seed_(seed), restricting_only_(restricting_only || adding_too), adding_too_(adding_too),
+          r_(seed) {}
 
     Generated run() {
         world();
@@ -468,6 +475,8 @@ private:
     void modifications() {
         int count = restricting_only_ ? r_.between(3, 9) : r_.between(3, 7);
         std::vector<std::string> kinds = restricting_only_ ? RESTRICTING_KINDS : all_kinds();
+        if (adding_too_)
+            kinds.insert(kinds.end(), ADDING_KINDS.begin(), ADDING_KINDS.end());
         // The first kind cycles with the seed, so that every kind is met in a few seeds; the
         // others are drawn without repeats, except barriers (the paper's design).
         std::string first = kinds[seed_ % kinds.size()];
@@ -903,6 +912,7 @@ private:
 
     unsigned seed_;
     bool restricting_only_;
+    bool adding_too_;
     Random r_;
     Generated g_;
     int isolated_robot_ = -1, isolated_human_ = -1;
@@ -1286,6 +1296,65 @@ TEST(WitnessAgreement, HittingSetPhaseAgreesWithExhaustive) {
         return;
     EXPECT_GE(proofs, seeds / 2);
     EXPECT_GE(non_empty_proofs, seeds / 10);
+}
+
+// Problems with restricting modifications and modifications that add plans (a new passage,
+// a rule relaxed), up to 9: the hitting-set phase proves them with the floors of
+// addition_floors.h, and must agree with every subset; so must the best-first search alone.
+TEST(WitnessAgreement, MixedModificationsAgreeWithExhaustive) {
+    int seeds = seeds_from_environment();
+    int disagreements = 0, proofs = 0, proofs_with_adding = 0, adding_chosen = 0;
+    double witness_seconds = 0, exhaustive_seconds = 0;
+    int first = std::getenv("ENVDESIGN_AGREEMENT_FIRST")
+                    ? std::atoi(std::getenv("ENVDESIGN_AGREEMENT_FIRST"))
+                    : 0;
+    for (int s = first; s < first + seeds; ++s) {
+        unsigned seed = 200000u + static_cast<unsigned>(s);
+        Generated g = Generator(seed, false, true).run();
+        fs::path dir = directory_for(seed);
+        fs::remove_all(dir);
+        fs::path spec = write_spec(g, dir, seed % 5 == 0);
+        DesignProblem problem = load_design_problem(spec.string());
+        TouchIndex index(problem);
+        bool has_adding = false;
+        for (int m = 0; m < index.size(); ++m)
+            has_adding = has_adding || (!index.of(m).restricting && index.of(m).adding);
+        Answer exhaustive = search(problem, SearchMethod::EXHAUSTIVE);
+        Answer witness = search(problem, SearchMethod::WITNESS);
+        Answer best_first = search(problem, SearchMethod::WITNESS, false);
+        witness_seconds += witness.seconds, exhaustive_seconds += exhaustive.seconds;
+        proofs += witness.hitting_set_proof;
+        if (std::getenv("ENVDESIGN_AGREEMENT_VERBOSE"))
+            std::cout << "seed " << seed << " witness " << witness.seconds << " s ("
+                      << witness.evaluated << " evaluated), exhaustive " << exhaustive.seconds
+                      << " s\n";
+        proofs_with_adding += witness.hitting_set_proof && has_adding;
+        adding_chosen += witness.hitting_set_proof &&
+                         std::any_of(witness.design.begin(), witness.design.end(), [&](int m) {
+                             return !index.of(m).restricting && index.of(m).adding;
+                         });
+        std::string diff = disagreement(witness, exhaustive);
+        if (std::string alone = disagreement(best_first, exhaustive); !alone.empty())
+            diff += " (best-first alone:" + alone + ")";
+        if (!diff.empty()) {
+            ++disagreements;
+            ADD_FAILURE() << "seed " << seed << ", spec " << spec.string() << ":" << diff
+                          << "\n  witness:    " << describe(witness)
+                          << "\n  exhaustive: " << describe(exhaustive);
+            continue;
+        }
+        if (!std::getenv("ENVDESIGN_AGREEMENT_KEEP"))
+            fs::remove_all(dir);
+    }
+    std::cout << "[ agreement ] restricting and adding: " << seeds << " seeds, " << disagreements
+              << " disagreements; hitting-set proofs " << proofs << " (with adding modifications "
+              << proofs_with_adding << ", an adding one chosen " << adding_chosen << "); witness "
+              << number(witness_seconds) << " s, exhaustive " << number(exhaustive_seconds) << " s"
+              << std::endl;
+    if (seeds < 40)
+        return;
+    EXPECT_GE(proofs_with_adding, seeds / 4);
+    EXPECT_GE(adding_chosen, 1);
 }
 
 // A directed case: a fresh predicate declared by two modifications. "rule" (people are told

@@ -1,0 +1,242 @@
+#include "design/addition_floors.h"
+
+#include "design/compilation.h"
+#include "design/configuration.h"
+#include "ground/grounder.h"
+#include "ground/stop.h"
+#include "planning/planner.h"
+
+#include <algorithm>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace envdesign::design {
+namespace {
+
+// "+|r-connected|v19|v18": a literal of P_mod, its sign first.
+std::string literal_key(bool negated, const std::string &predicate,
+                        const std::vector<std::string> &args) {
+    std::string key = negated ? "-|" : "+|";
+    key += predicate;
+    for (const std::string &a : args)
+        key += "|" + a;
+    return key;
+}
+
+// The operators of one ground P_mod, indexed by what they read and which schema they are.
+struct OperatorIndex {
+    std::map<std::string, std::vector<int>> by_literal; // precondition literal -> operators
+    std::map<std::string, std::vector<int>> by_schema;
+    std::set<std::string> goal; // goal literals, keyed the same way
+
+    OperatorIndex(const pddl::Domain &domain, const pddl::Problem &problem,
+                  const ground::GroundTask &task) {
+        for (int o = 0; o < task.num_operators(); ++o) {
+            std::istringstream words(task.operators[o].name.substr(1)); // "(move a b)"
+            std::string schema, word;
+            std::vector<std::string> args;
+            words >> schema;
+            while (words >> word)
+                args.push_back(word.back() == ')' ? word.substr(0, word.size() - 1) : word);
+            by_schema[schema].push_back(o);
+            const pddl::Action *action = domain.find_action(schema);
+            if (!action)
+                continue; // cannot happen: every operator comes from a schema
+            for (const pddl::Literal &l : action->precondition) {
+                std::vector<std::string> bound;
+                for (const std::string &a : l.atom.args) {
+                    std::string value = a;
+                    for (std::size_t i = 0; i < action->parameters.size() && i < args.size(); ++i)
+                        if (action->parameters[i].name == a)
+                            value = args[i];
+                    bound.push_back(value);
+                }
+                by_literal[literal_key(l.negated, l.atom.predicate, bound)].push_back(o);
+            }
+        }
+        for (const pddl::Literal &l : problem.goal)
+            goal.insert(literal_key(l.negated, l.atom.predicate, l.atom.args));
+    }
+};
+
+// A predicate's name in the searched model for an edit of the robot's (true) or the human's
+// model; nullopt: that model is not searched.
+using Naming = std::function<std::optional<std::string>(bool robot, const std::string &name)>;
+
+std::optional<std::string> in_compilation(bool robot, const std::string &name) {
+    return robot ? robot_copy(name) : human_copy(name);
+}
+std::optional<std::string> in_robot_model(bool robot, const std::string &name) {
+    return robot ? std::optional<std::string>(name) : std::nullopt;
+}
+
+// The operators a plan of A needs to use `modification`; nullopt: any plan may (it edits
+// the goal, or an initial atom the goal reads).
+std::optional<std::set<int>> users(const Modification &modification, const OperatorIndex &index,
+                                   const Naming &naming) {
+    std::set<int> out;
+    auto take = [&](const std::map<std::string, std::vector<int>> &from, const std::string &key) {
+        auto it = from.find(key);
+        if (it != from.end())
+            out.insert(it->second.begin(), it->second.end());
+    };
+    for (const Edit &edit : modification.edits) {
+        for (bool robot : {true, false}) {
+            if (!(robot ? applies_to_robot(edit.model) : applies_to_human(edit.model)) ||
+                !naming(robot, ""))
+                continue;
+            auto copy = [&](const std::string &name) { return *naming(robot, name); };
+            switch (edit.kind) {
+            case EditKind::ADD_INIT:
+            case EditKind::REMOVE_INIT: {
+                const pddl::SExpr &atom = edit.expression;
+                if (!atom.is_list || atom.items.empty())
+                    return std::nullopt;
+                std::vector<std::string> args;
+                for (std::size_t i = 1; i < atom.items.size(); ++i)
+                    args.push_back(atom.items[i].to_string());
+                // More atoms help a plan only where it reads one; fewer, where it reads one
+                // as absent.
+                std::string key = literal_key(edit.kind == EditKind::REMOVE_INIT,
+                                              copy(atom.items[0].to_string()), args);
+                std::string opposite = (key[0] == '+' ? "-" : "+") + key.substr(1);
+                if (index.goal.count(key) || index.goal.count(opposite))
+                    return std::nullopt;
+                take(index.by_literal, key);
+                break;
+            }
+            case EditKind::REMOVE_PRECONDITION:
+            case EditKind::ADD_EFFECT:
+            case EditKind::REMOVE_EFFECT:
+                take(index.by_schema, edit.action);
+                break;
+            case EditKind::ADD_PREDICATE:
+                break;
+            default: // REMOVE_GOAL, and kinds an adding modification does not have
+                return std::nullopt;
+            }
+        }
+    }
+    return out;
+}
+
+planning::PlannerOptions options_for(const Deadline &deadline) {
+    planning::PlannerOptions options;
+    options.limits.stop = deadline.stop_flag();
+    if (deadline.limited())
+        options.limits.time_limit_s = std::max(1e-3, deadline.remaining_seconds());
+    return options;
+}
+
+// The least primary cost of a plan of `task` (with a step among `steps`, if given): INF
+// when there is none, nullopt when a limit stopped the search.
+std::optional<double> least_cost(const ground::GroundTask &task, const std::set<int> *steps,
+                                 const Deadline &deadline) {
+    ground::GroundTask flagged;
+    if (steps) {
+        flagged = task;
+        auto used = static_cast<ground::FactId>(flagged.num_facts());
+        flagged.fact_names.push_back("(envdesign-used-addition)");
+        for (int o : *steps)
+            flagged.operators[o].add.push_back(used); // the largest id: the list stays sorted
+        flagged.goal.push_back(used);
+    }
+    planning::PlanReport report =
+        planning::plan_task(steps ? flagged : task, options_for(deadline));
+    if (report.status == search::SearchStatus::SOLVED)
+        return static_cast<double>(report.cost);
+    if (report.status == search::SearchStatus::FAILED)
+        return INF;
+    return std::nullopt;
+}
+
+} // namespace
+
+namespace {
+
+// One model of A for one task: its floors for every modification in `adding`, kept where at
+// most `floor`. False, with `why`, when it does not ground or the deadline passes first.
+bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
+                  const pddl::Domain &domain, const pddl::Problem &pddl_problem,
+                  const Naming &naming, double floor, const Deadline &deadline,
+                  std::vector<UseFloor> &below, long long &searches, std::string &why) {
+    ground::GroundTask task;
+    std::optional<OperatorIndex> index;
+    try {
+        task = ground::ground(
+            domain, pddl_problem, nullptr, [&] { return deadline.expired(); }, false);
+        index.emplace(domain, pddl_problem, task);
+    } catch (const std::exception &e) {
+        why = std::string("the design of every adding modification does not ground: ") + e.what();
+        return false;
+    }
+    // The least over every plan of A: a floor for every e; above `floor`, no adding
+    // modification can lower it.
+    auto least = least_cost(task, nullptr, deadline);
+    ++searches;
+    if (!least) {
+        why = "a time limit stopped the floors of adding modifications";
+        return false;
+    }
+    if (*least > floor)
+        return true;
+    for (int e : adding) {
+        auto steps = users(problem.modifications[e], *index, naming);
+        double cost = *least;
+        if (steps && steps->empty())
+            continue; // no plan of A uses it
+        if (steps) {
+            auto found = least_cost(task, &*steps, deadline);
+            ++searches;
+            if (!found && deadline.expired()) {
+                why = "a time limit stopped the floors of adding modifications";
+                return false;
+            }
+            cost = found.value_or(*least); // a planner limit: the floor of every plan
+        }
+        if (cost <= floor)
+            below.push_back({e, cost});
+    }
+    return true;
+}
+
+} // namespace
+
+std::optional<AdditionFloors> addition_floors(const DesignProblem &problem,
+                                              const std::vector<int> &adding,
+                                              const std::vector<double> &floor,
+                                              const std::vector<std::optional<double>> &robot_floor,
+                                              const Deadline &deadline, std::string &why) {
+    AdditionFloors out;
+    int tasks = static_cast<int>(problem.tasks.size());
+    out.below.resize(tasks);
+    out.robot_below.resize(tasks);
+    for (int t = 0; t < tasks && !adding.empty(); ++t) {
+        if (problem.tasks[t].probability <= 0)
+            continue;
+        ModelPair models = configured_models(problem, adding, t);
+        std::optional<CompiledTask> compiled;
+        try {
+            compiled = compile_explicable(models);
+        } catch (const std::exception &e) {
+            why = std::string("the design of every adding modification does not compile: ") +
+                  e.what();
+            return std::nullopt;
+        }
+        bool ok = model_floors(problem, adding, compiled->domain, compiled->problem, in_compilation,
+                               floor[t], deadline, out.below[t], out.searches, why);
+        if (ok && robot_floor[t])
+            ok = model_floors(problem, adding, models.robot_domain, models.robot_problem,
+                              in_robot_model, *robot_floor[t], deadline, out.robot_below[t],
+                              out.searches, why);
+        if (!ok) {
+            why += " (task '" + problem.tasks[t].name + "')";
+            return std::nullopt;
+        }
+    }
+    return out;
+}
+
+} // namespace envdesign::design
