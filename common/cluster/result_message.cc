@@ -51,10 +51,11 @@ std::vector<envdesign::design_point_t> ranking_message(const design::DesignProbl
             out.push_back(point_message(problem, *point));
             continue;
         }
-        design::DesignPoint unknown{.configuration = r.configuration,
-                                    .design_cost = r.design_cost,
-                                    .expected_ie = NOT_KNOWN,
-                                    .expected_robot_cost = NOT_KNOWN};
+        design::DesignPoint unknown;
+        unknown.configuration = r.configuration;
+        unknown.design_cost = r.design_cost;
+        unknown.expected_ie = NOT_KNOWN;
+        unknown.expected_robot_cost = NOT_KNOWN;
         envdesign::design_point_t m = point_message(problem, unknown);
         m.terms.objective = r.objective;
         out.push_back(std::move(m));

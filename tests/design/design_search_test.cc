@@ -215,8 +215,9 @@ TEST_P(AgainstExhaustive, BoundsNeverChangeTheRanking) {
                 << "N = " << n << ", rank " << i + 1;
             EXPECT_NEAR(r.ranking[i].objective, all[i].objective, 1e-9);
         }
-        if (n == 40) // more than every subset: nothing may be skipped
+        if (n == 40) { // more than every subset: nothing may be skipped
             EXPECT_EQ(r.counters.configurations_skipped + r.counters.configurations_abandoned, 0);
+        }
     }
 }
 
@@ -317,8 +318,9 @@ TEST(DesignSearch, ATimeLimitGivesTheBestRankingFoundSoFar) {
         ASSERT_NE(same, all.end());
         EXPECT_NEAR(r.ranking[i].objective, same->objective, 1e-9);
         EXPECT_LE(r.ranking[i].configuration.size(), 1u);
-        if (i > 0)
+        if (i > 0) {
             EXPECT_TRUE(ranks_before(r.ranking[i - 1], r.ranking[i]));
+        }
     }
 }
 

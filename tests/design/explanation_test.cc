@@ -140,6 +140,15 @@ TEST(Explanation, BreakEvenAmongAllDesignsIsExact) {
     EXPECT_LT(why.break_even.designs_compared, 64);
 }
 
+DesignPoint point(const Configuration &configuration, double cost, double ie, double robot_cost) {
+    DesignPoint p;
+    p.configuration = configuration;
+    p.design_cost = cost;
+    p.expected_ie = ie;
+    p.expected_robot_cost = robot_cost;
+    return p;
+}
+
 // Hand-made points, gamma = 1 (f_T = T), kappa = 0: objectives T * E[IE] + C.
 //   chosen A = {0, 1}: IE 1, C 2 -> T + 2
 //   B = {}:           IE 1.5, C 0 -> 1.5 T   (ties A at T = 4, and wins the tie: fewer
@@ -149,7 +158,8 @@ TEST(Explanation, BreakEvenAmongAllDesignsIsExact) {
 TEST(BreakEven, HandMadePointsWithTies) {
     ObjectiveWeights w;
     w.alpha = 1, w.beta = 1, w.kappa = 0, w.gamma = 1, w.horizon = 5;
-    DesignPoint a{{0, 1}, 2, 1, 0}, b{{}, 0, 1.5, 0}, d{{0, 1, 2}, 5, 0.5, 0};
+    DesignPoint a = point({0, 1}, 2, 1, 0), b = point({}, 0, 1.5, 0),
+                d = point({0, 1, 2}, 5, 0.5, 0);
     BreakEven be = break_even(w, a, {a, b, d});
     EXPECT_EQ(be.designs_compared, 3);
     ASSERT_TRUE(be.horizon_down && be.horizon_up && be.alpha_down && be.alpha_up);
@@ -160,7 +170,7 @@ TEST(BreakEven, HandMadePointsWithTies) {
     EXPECT_NEAR(be.alpha_down->at, 0.8, 1e-12); // 5a + 2 = 7.5a
     EXPECT_NEAR(be.alpha_up->at, 1.2, 1e-12);   // 5a + 2 = 2.5a + 5
     // An infinite chosen objective has no break-even.
-    DesignPoint stuck{{0}, 1, INF, INF};
+    DesignPoint stuck = point({0}, 1, INF, INF);
     BreakEven none = break_even(w, stuck, {a, b, stuck});
     EXPECT_FALSE(none.horizon_down || none.horizon_up || none.alpha_down || none.alpha_up);
 }
