@@ -51,8 +51,11 @@ class Answers:
     def __init__(self, url):
         self.bus = envdesign_client.UdpmBus(url)
         take = self.bus._take
-        self.bus._take = lambda datagram, sender: (
-            (lambda m: (m[0], m[1], sender) if m else None)(take(datagram, sender)))
+
+        def with_source(datagram, sender):  # receive() then gives (channel, payload, source)
+            message = take(datagram, sender)
+            return (*message, sender) if message else None
+        self.bus._take = with_source
         self.results, self.progress = {}, {}  # (client, request_id) -> [source]
         self.stop = False
         self.thread = threading.Thread(target=self.listen)
@@ -145,8 +148,8 @@ class TwoClustersStartedAlike(unittest.TestCase):
         client = f"python-client/{socket.gethostname()}/{os.getpid()}"
         python = answers.of(client)
         self.assertEqual(len(python), 2, python)  # the good request and the bad one
-        cli_requests = {k: answers.of(k[0])[k] for k in answers.results
-                        if k[0].startswith("client/")}
+        cli_requests = {key: answers.of(key[0])[key] for key in answers.results
+                        if key[0].startswith("client/")}
         self.assertEqual(len(cli_requests), 2, answers.results)
         sources = set()
         for request, (results, senders) in list(python.items()) + list(cli_requests.items()):
