@@ -3,6 +3,7 @@
 //
 //   envdesign-arrivals --replay FILE.csv --rate HZ --problem ID [--site S] [--domain N]
 //   envdesign-arrivals --task NAME --count N --rate HZ --problem ID
+//   envdesign-arrivals --replay TRIPS.csv --floor DIR --problem ID   (columns from, to)
 //
 // Exit codes (SPEC.md): 0 all published (and acknowledged by the bridges matched), 2 bad
 // input or usage, 4 --wait-bridge timed out or acknowledgements did not come, 1 a DDS error.
@@ -10,6 +11,9 @@
 #include "arrival_publisher.h"
 #include "replay.h"
 
+#include "floor/floor_draw.h"
+#include "floor/floor_error.h"
+#include "floor/floor_names.h"
 #include "pddl/parse_error.h"
 #include "service/number_flag.h"
 
@@ -30,6 +34,7 @@ std::atomic<bool> g_stop{false}; // set by SIGINT/SIGTERM only
 
 struct Flags {
     std::string replay, task, problem_id, site = "replay";
+    std::string floor; // a folder `envdesign floor import` wrote: names the trips' tasks
     long long count = 1;
     int repeat = 1, domain = 0, history = dds::WRITER_HISTORY;
     double rate = 0, wait_bridge = 0, linger = 1, ack_timeout = 5;
@@ -44,8 +49,18 @@ bool pace(std::chrono::steady_clock::time_point when) {
 }
 
 std::vector<arrivals_client::ReplayRow> rows_of(const Flags &f) {
-    if (!f.replay.empty())
-        return arrivals_client::read_replay_file(f.replay);
+    if (!f.replay.empty()) {
+        std::vector<arrivals_client::ReplayRow> rows = arrivals_client::read_replay_file(f.replay);
+        if (f.floor.empty()) {
+            arrivals_client::name_trips(rows, nullptr);
+            return rows;
+        }
+        floor::FloorNames names(floor::read_floor_json(f.floor));
+        arrivals_client::name_trips(rows,
+                                    [&](const std::string &from, const std::string &to,
+                                        std::string &why) { return names.task(from, to, why); });
+        return rows;
+    }
     std::vector<arrivals_client::ReplayRow> rows(static_cast<std::size_t>(f.count));
     for (auto &row : rows)
         row.task = f.task;
@@ -100,6 +115,9 @@ int main(int argc, char **argv) {
         ->check(CLI::PositiveNumber);
     app.add_option("--problem", f.problem_id, "design problem id (rows may override)");
     app.add_option("--site", f.site, "site name (rows may override)");
+    app.add_option("--floor", f.floor,
+                   "an imported floor's folder: replay rows may give from,to (vI or a place's "
+                   "name) for the task vI-vJ");
     app.add_option("--domain", f.domain, "DDS domain id")->check(CLI::Range(0, 230));
     app.add_option("--history", f.history, "arrivals kept per site for late bridges")
         ->check(CLI::PositiveNumber);
@@ -124,6 +142,9 @@ int main(int argc, char **argv) {
         return publish(f, rows_of(f));
     } catch (const pddl::ParseError &e) {
         std::cerr << e.what() << "\n";
+        return 2;
+    } catch (const floor::FloorError &e) {
+        std::cerr << "envdesign-arrivals: " << e.what() << "\n";
         return 2;
     } catch (const std::exception &e) {
         std::cerr << "envdesign-arrivals: " << e.what() << "\n";

@@ -13,8 +13,9 @@ namespace {
 using pddl::Location;
 using pddl::ParseError;
 
-const std::vector<std::string> COLUMNS = {"task",     "site",         "problem_id",        "utime",
-                                          "sequence", "problem_file", "human_problem_file"};
+const std::vector<std::string> COLUMNS = {"task",     "site",         "problem_id",         "utime",
+                                          "sequence", "problem_file", "human_problem_file", "from",
+                                          "to"};
 
 struct Cell {
     std::string text;
@@ -92,11 +93,17 @@ private:
                                  "unknown column '" + cell.text +
                                      "' (expected task, site, "
                                      "problem_id, utime, sequence, "
-                                     "problem_file, human_problem_file)");
+                                     "problem_file, human_problem_file, from, to)");
             header_.push_back(cell.text);
         }
-        if (std::find(header_.begin(), header_.end(), "task") == header_.end())
-            throw ParseError({path_, line, 1}, "the header has no 'task' column");
+        auto has = [&](const char *c) {
+            return std::find(header_.begin(), header_.end(), c) != header_.end();
+        };
+        if (has("from") != has("to"))
+            throw ParseError({path_, line, 1}, "the header has one of 'from' and 'to'");
+        if (!has("task") && !has("from"))
+            throw ParseError({path_, line, 1}, "the header has no 'task' column (nor 'from' "
+                                               "and 'to')");
     }
 
     ReplayRow read_row(const std::vector<Cell> &cells, int line) {
@@ -113,6 +120,12 @@ private:
     void set(ReplayRow &row, const std::string &column, const Cell &cell, const Location &at) {
         if (column == "task") {
             row.task = cell.text; // empty is allowed: a bad sample, for tests
+            return;
+        }
+        if (column == "from" || column == "to") { // empty: a row of the task column
+            if (!cell.text.empty())
+                (column == "from" ? row.from : row.to) = cell.text;
+            (column == "from" ? row.from_at : row.to_at) = at;
             return;
         }
         if (cell.text.empty())
@@ -139,6 +152,24 @@ private:
 } // namespace
 
 std::vector<ReplayRow> read_replay_file(const std::string &path) { return Reader(path).read(); }
+
+void name_trips(std::vector<ReplayRow> &rows, const TripNamer &name_of) {
+    for (auto &row : rows) {
+        if (!row.from && !row.to)
+            continue;
+        if (!row.from || !row.to)
+            throw ParseError(row.from ? row.to_at : row.from_at, "a trip needs both from and to");
+        if (!row.task.empty())
+            throw ParseError(row.from_at, "a row has a task and a trip: give one");
+        if (!name_of)
+            throw ParseError(row.from_at, "a trip (from, to) needs the floor: --floor DIR");
+        std::string why;
+        std::optional<std::string> task = name_of(*row.from, *row.to, why);
+        if (!task)
+            throw ParseError(row.from_at, why);
+        row.task = *task;
+    }
+}
 
 arrivals::Arrival ReplayNumbering::arrival(const ReplayRow &row, const std::string &problem_id,
                                            const std::string &site, int64_t now_utime) {

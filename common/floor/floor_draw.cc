@@ -51,9 +51,11 @@ public:
 
     std::string svg() {
         double bottom = y(min_y_) + (drawing_.legend ? 40 : 20);
-        // Room on the right for the labels of the places there.
-        out_ << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << x(max_x_) + 100
-             << "\" height=\"" << bottom << "\" font-family=\"sans-serif\">\n"
+        double right = x(max_x_) + 100; // room for the labels of the places there
+        // The viewBox lets a page scale the picture down to its width.
+        out_ << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << right << "\" height=\""
+             << bottom << "\" viewBox=\"0 0 " << right << " " << bottom
+             << "\" font-family=\"sans-serif\">\n"
              << "<title>" << escaped(floor_["source"]["map"].get<std::string>()) << "</title>\n";
         for (const auto &c : floor_["candidates"])
             if (drawing_.design.count(c.at("name").get<std::string>()))

@@ -19,7 +19,7 @@ table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding
 th{background:#f3f3f3}td.l,th.l{text-align:left}.plan{font-family:monospace;font-size:.9em}
 .differs{background:#ffd966}.muted{color:#666;font-size:.9em}
 figure{margin:1em 0}figcaption{color:#444;font-size:.95em}
-.floorpair{display:flex;gap:1em}.floorpair figure{margin:.5em 0}
+.floorpair{display:flex;gap:1em}.floorpair figure{margin:.5em 0;flex:1}figure svg{max-width:100%;height:auto}
 </style>)";
 
 std::string h(const std::string &text) { return html_escape(text); }
