@@ -7,8 +7,10 @@
 #include "planning/planner.h"
 
 #include <algorithm>
+#include <chrono>
 #include <functional>
 #include <map>
+#include <queue>
 #include <set>
 #include <sstream>
 
@@ -130,26 +132,77 @@ planning::PlannerOptions options_for(const Deadline &deadline) {
     return options;
 }
 
-// The least primary cost of a plan of `task` (with a step among `steps`, if given): INF
-// when there is none, nullopt when a limit stopped the search.
-std::optional<double> least_cost(const ground::GroundTask &task, const std::set<int> *steps,
-                                 const Deadline &deadline) {
-    ground::GroundTask flagged;
-    if (steps) {
-        flagged = task;
-        auto used = static_cast<ground::FactId>(flagged.num_facts());
-        flagged.fact_names.push_back("(envdesign-used-addition)");
-        for (int o : *steps)
-            flagged.operators[o].add.push_back(used); // the largest id: the list stays sorted
-        flagged.goal.push_back(used);
-    }
-    planning::PlanReport report =
-        planning::plan_task(steps ? flagged : task, options_for(deadline));
+// The least primary cost of a plan of `task`: INF when there is none, nullopt when a limit
+// stopped the search.
+std::optional<double> least_cost(const ground::GroundTask &task, const Deadline &deadline) {
+    planning::PlanReport report = planning::plan_task(task, options_for(deadline));
     if (report.status == search::SearchStatus::SOLVED)
         return static_cast<double>(report.cost);
     if (report.status == search::SearchStatus::FAILED)
         return INF;
     return std::nullopt;
+}
+
+// The task with one more fact, `used`, that the goal requires; use() says which operators
+// set it, so that a plan of it is a plan of the task with one of those steps.
+class FlaggedTask {
+public:
+    explicit FlaggedTask(const ground::GroundTask &task) : task_(task), used_(task.num_facts()) {
+        task_.fact_names.push_back("(envdesign-used-addition)");
+        task_.goal.push_back(used_);
+    }
+    std::optional<double> least_cost_using(const std::set<int> &steps, const Deadline &deadline) {
+        for (int o : steps)
+            task_.operators[o].add.push_back(used_); // the largest id: the list stays sorted
+        auto cost = least_cost(task_, deadline);
+        for (int o : steps)
+            task_.operators[o].add.pop_back();
+        return cost;
+    }
+
+private:
+    ground::GroundTask task_;
+    ground::FactId used_;
+};
+
+// Per operator, a lower bound on the cost of any plan prefix that ends with it: h^max of
+// its precondition from the initial state (delete relaxation) plus its cost. INF where the
+// relaxation never reaches it.
+std::vector<double> cheapest_prefix(const ground::GroundTask &task) {
+    std::vector<double> fact(task.num_facts(), INF);
+    std::vector<std::vector<int>> readers(task.num_facts());
+    std::vector<int> unmet(task.num_operators());
+    std::vector<double> reached(task.num_operators(), 0.0);
+    using Entry = std::pair<double, ground::FactId>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    for (ground::FactId f : task.initial_state)
+        fact[f] = 0, queue.push({0.0, f});
+    std::vector<double> out(task.num_operators(), INF);
+    auto apply = [&](int o) {
+        out[o] = reached[o] + task.operators[o].cost;
+        for (ground::FactId f : task.operators[o].add)
+            if (out[o] < fact[f])
+                fact[f] = out[o], queue.push({out[o], f});
+    };
+    for (int o = 0; o < task.num_operators(); ++o) {
+        unmet[o] = static_cast<int>(task.operators[o].pre.size());
+        for (ground::FactId f : task.operators[o].pre)
+            readers[f].push_back(o);
+        if (unmet[o] == 0)
+            apply(o);
+    }
+    while (!queue.empty()) {
+        auto [cost, f] = queue.top();
+        queue.pop();
+        if (cost > fact[f])
+            continue;
+        for (int o : readers[f]) {
+            reached[o] = std::max(reached[o], cost); // facts leave the queue by cost
+            if (--unmet[o] == 0)
+                apply(o);
+        }
+    }
+    return out;
 }
 
 } // namespace
@@ -174,7 +227,7 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
     }
     // The least over every plan of A: a floor for every e; above `floor`, no adding
     // modification can lower it.
-    auto least = least_cost(task, nullptr, deadline);
+    auto least = least_cost(task, deadline);
     ++searches;
     if (!least) {
         why = "a time limit stopped the floors of adding modifications";
@@ -182,13 +235,22 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
     }
     if (*least > floor)
         return true;
+    std::vector<double> prefix = cheapest_prefix(task);
+    std::optional<FlaggedTask> flagged;
     for (int e : adding) {
         auto steps = users(problem.modifications[e], *index, naming);
         double cost = *least;
         if (steps && steps->empty())
             continue; // no plan of A uses it
         if (steps) {
-            auto found = least_cost(task, &*steps, deadline);
+            double cheapest = INF; // a plan using e costs at least this: no search needed
+            for (int o : *steps)
+                cheapest = std::min(cheapest, prefix[o]);
+            if (cheapest > floor)
+                continue;
+            if (!flagged)
+                flagged.emplace(task);
+            auto found = flagged->least_cost_using(*steps, deadline);
             ++searches;
             if (!found && deadline.expired()) {
                 why = "a time limit stopped the floors of adding modifications";
@@ -209,6 +271,7 @@ std::optional<AdditionFloors> addition_floors(const DesignProblem &problem,
                                               const std::vector<double> &floor,
                                               const std::vector<std::optional<double>> &robot_floor,
                                               const Deadline &deadline, std::string &why) {
+    auto start = std::chrono::steady_clock::now();
     AdditionFloors out;
     int tasks = static_cast<int>(problem.tasks.size());
     out.below.resize(tasks);
@@ -236,6 +299,7 @@ std::optional<AdditionFloors> addition_floors(const DesignProblem &problem,
             return std::nullopt;
         }
     }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }
 

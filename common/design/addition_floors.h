@@ -17,10 +17,13 @@
 // an initial atom e adds or removes, or e edits the goal. L(t, e) is the least cost of a
 // plan of A with such a step (the goal case: of any plan of A), so the plan costs at least
 // that. The robot's optimal cost c_R*, a floor on c_R(pi), falls the same way (the same
-// argument on the robot's model alone). "Uses" is read on the ground task of A, built without
-// pruning irrelevant operators so that every plan of A is a plan of it; a step is an operator, and
-// the search is A* on that task with one more fact, set by the operators that use e and required by
-// the goal.
+// argument on the robot's model alone).
+// "Uses" is read on the ground task of A, built without pruning irrelevant operators so
+// that every plan of A is a plan of it; a step is an operator, and the search is A* on that
+// task with one more fact, set by the operators that use e and required by the goal. Before
+// searching, h^max of an operator's precondition plus its cost bounds every plan that uses
+// it from below: where that bound is above the floor for each operator of e, e cannot
+// lower it and no search is made.
 
 #include "design/deadline.h"
 #include "design/design_problem.h"
@@ -44,7 +47,8 @@ struct AdditionFloors {
     // The same for the robot's optimal cost c_R* (a floor on c_R(pi)): the least robot cost
     // of a plan of A's robot model that uses e, where at most the task's robot floor.
     std::vector<std::vector<UseFloor>> robot_below;
-    long long searches = 0;
+    long long searches = 0; // A* runs
+    double seconds = 0;
 };
 
 // L(t, e) for every task of positive probability and every modification in `adding`

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <iterator>
 #include <map>
+#include <sstream>
 
 namespace envdesign::design::witness {
 
@@ -175,6 +177,11 @@ std::optional<RootFacts> DesignLearner::root_facts() {
             result_.notes.push_back("the hitting-set phase was not used: " + why);
             return std::nullopt;
         }
+        std::ostringstream seconds;
+        seconds << std::setprecision(3) << floors->seconds;
+        result_.notes.push_back(
+            "floors of the adding modifications: " + std::to_string(floors->searches) +
+            " searches in " + seconds.str() + " s (docs/design-search.md)");
         facts.lower_floors = std::move(floors->below);
         facts.lower_robot_floors = std::move(floors->robot_below);
     }

@@ -65,18 +65,12 @@ public:
                   const DesignSearchOptions &options,
                   const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          index_(problem), bound_(problem, index_), ranking_(options.ranking),
+          index_(problem), bound_(problem, index_),
+          ranking_(options.ranking, options.ranking_all ? Padding::LISTED : Padding::LEFT_OUT),
           learner_(problem, evaluator, options, index_, bound_, result_, ranking_,
                    [this] { report(); }),
           tasks_(static_cast<int>(problem.tasks.size())) {
-        for (int m : bound_.always()) {
-            const ModificationClass &c = index_.of(m);
-            const Modification &mod = problem.modifications[m];
-            result_.notes.push_back(
-                "modification '" + mod.name + "' " +
-                (c.restricting ? "has a negative cost" : "is not restricting (" + c.why_not + ")") +
-                ": added to every configuration");
-        }
+        note_added_everywhere();
         if (is_cost_optimal(problem.weights.behaviour))
             result_.notes.push_back(
                 "robot_behaviour " + behaviour_name(problem.weights.behaviour) +
@@ -84,6 +78,38 @@ public:
                 "every action of every optimal plan; the IE term is bounded by its least "
                 "value, and there is no hitting-set phase (docs/design-search.md)");
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
+    }
+
+    // Why the search weighs some modifications with every design: one note per modification
+    // that is not restricting or costs less than nothing, and one for all that add plans (a
+    // floor's lanes are hundreds).
+    void note_added_everywhere() {
+        std::vector<std::string> adding;
+        for (int m : bound_.always()) {
+            const ModificationClass &c = index_.of(m);
+            const Modification &mod = problem_.modifications[m];
+            if (!c.restricting && c.adding && problem_.weights.beta * mod.cost >= 0) {
+                adding.push_back("'" + mod.name + "'");
+                continue;
+            }
+            result_.notes.push_back(
+                "modification '" + mod.name + "' " +
+                (c.restricting ? "has a negative cost" : "is not restricting (" + c.why_not + ")") +
+                ": the search weighs it with every design, not only where a witness plan uses "
+                "what it changes");
+        }
+        if (adding.empty())
+            return;
+        std::string names;
+        for (std::size_t i = 0; i < adding.size() && i < 5; ++i)
+            names += (i ? ", " : "") + adding[i];
+        if (adding.size() > 5)
+            names += " and " + std::to_string(adding.size() - 5) + " more";
+        result_.notes.push_back(std::to_string(adding.size()) +
+                                (adding.size() == 1 ? " modification adds" : " modifications add") +
+                                " plans (" + names +
+                                "): the search weighs each with every design, and bounds it by "
+                                "the floors it can lower (docs/design-search.md)");
     }
 
     DesignResult run() {
