@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The README's two commands on a fresh clone, timed (issue 25; a benchmark, not CI).
+#
+#   bash tests/benchmarks/build_time/time_fresh_clone.sh [--first-only] [REPO] [WORK]
+#
+# Clones REPO (default: this repository's HEAD) into WORK (default /tmp/envdesign-fresh-clone,
+# replaced), with ../shared beside it as a link, and runs there, as README.md writes them:
+#   1. the first command (build the CLI, design the restaurant): seconds to its answer;
+#   2. the test command (build everything, run every test): seconds to its end.
+# ccache starts empty (a fresh machine has no cache), and every compile and link is logged
+# with its wall and CPU seconds (time_command.sh); at the end, the slowest files, each
+# step's CPU seconds, and the machine's load, which stretches wall time on a shared machine.
+# Packages are not timed: deploy/install-deps.sh finds them installed (docs/results/build.md
+# says what a fresh machine downloads).
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+first_only=0
+if [ "${1:-}" = "--first-only" ]; then
+    first_only=1
+    shift
+fi
+repo=${1:-$(cd "$here/../../.." && pwd)}
+work=${2:-/tmp/envdesign-fresh-clone}
+shared=$(cd "$repo/../shared" && pwd)
+
+rm -rf "$work"
+mkdir -p "$work"
+git clone -q "$repo" "$work/envdesign"
+ln -s "$shared" "$work/shared"
+cd "$work/envdesign"
+
+# The commands as the README writes them: its indented lines that run deploy/build.sh.
+first=$(grep -E '^    bash deploy/build.sh .*build/bin/envdesign design' README.md | head -1 | sed 's/^ *//')
+tests=$(grep -E '^    bash deploy/build.sh && ctest' README.md | head -1 | sed 's/^ *//')
+[ -n "$first" ] && [ -n "$tests" ] || { echo "the README's two commands not found" >&2; exit 1; }
+
+export CCACHE_DIR=$work/ccache
+export ENVDESIGN_TIME_LOG=$work/compile-times.txt
+# CMake (3.17+) takes a launcher from the environment on the first configure: the timing
+# launcher, in front of ccache when there is one, as deploy/build.sh would use it.
+launcher=$here/time_command.sh
+command -v ccache >/dev/null && launcher="$launcher;$(command -v ccache)"
+export CMAKE_CXX_COMPILER_LAUNCHER=$launcher CMAKE_C_COMPILER_LAUNCHER=$launcher
+
+# step NAME COMMAND: runs COMMAND with bash, prints its wall and CPU seconds (children too).
+step() {
+    local name=$1 command=$2 log="$work/$1.log"
+    local load_before start end cpu
+    load_before=$(cut -d' ' -f1 /proc/loadavg)
+    start=$(date +%s.%N)
+    /usr/bin/time -f '%U %S' -o "$work/$name.cpu" bash -c "$command" >"$log" 2>&1 ||
+        { echo "$name failed; the end of $log:"; tail -30 "$log"; exit 1; }
+    end=$(date +%s.%N)
+    cpu=$(awk '{print $1 + $2}' "$work/$name.cpu")
+    printf '%-6s %7.1f s wall %7.1f s CPU  (load %s before, %s after)\n' "$name" \
+        "$(echo "$end - $start" | bc)" "$cpu" "$load_before" "$(cut -d' ' -f1 /proc/loadavg)"
+}
+
+echo "clone of $(git -C "$repo" rev-parse --short HEAD) in $work/envdesign, $(nproc) cores"
+echo "first: $first"
+step first "$first"
+grep -q "^design: {barrier-00-01, barrier-10-11}" "$work/first.log" ||
+    { echo "the first command did not give the restaurant's design"; exit 1; }
+objects=$(grep -c '\.o$' "$ENVDESIGN_TIME_LOG" || true)
+echo "       $objects compiles; the answer: $(grep '^design:' "$work/first.log")"
+if [ $first_only = 0 ]; then
+    echo "tests: $tests"
+    step tests "$tests"
+    grep -E "tests passed|tests failed" "$work/tests.log" | tail -1
+fi
+
+echo "slowest compiles (wall s, CPU s, object):"
+sort -k2 -rn "$ENVDESIGN_TIME_LOG" | head -12 | sed 's/^/  /'
+awk '{cpu += $2} END {printf "all compiles: %.0f CPU s in %d compiler runs\n", cpu, NR}' "$ENVDESIGN_TIME_LOG"
