@@ -56,7 +56,7 @@ step() {
         "$(echo "$end - $start" | bc)" "$cpu" "$load_before" "$(cut -d' ' -f1 /proc/loadavg)"
 }
 
-echo "clone of $(git -C "$repo" rev-parse --short HEAD) in $work/envdesign, $(nproc) cores"
+echo "clone of $(git rev-parse --short HEAD) in $work/envdesign, $(nproc) cores"
 echo "first: $first"
 step first "$first"
 grep -q "^design: {barrier-00-01, barrier-10-11}" "$work/first.log" ||
