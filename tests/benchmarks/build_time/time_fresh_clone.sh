@@ -62,7 +62,7 @@ step first "$first"
 grep -q "^design: {barrier-00-01, barrier-10-11}" "$work/first.log" ||
     { echo "the first command did not give the restaurant's design"; exit 1; }
 objects=$(grep -c '\.o$' "$ENVDESIGN_TIME_LOG" || true)
-echo "       $objects compiles; the answer: $(grep '^design:' "$work/first.log")"
+echo "       $objects compiles; the answer: $(grep '^design: {' "$work/first.log")"
 if [ $first_only = 0 ]; then
     echo "tests: $tests"
     step tests "$tests"
