@@ -126,6 +126,9 @@ std::optional<std::set<int>> users(const Modification &modification, const Opera
 
 planning::PlannerOptions options_for(const Deadline &deadline) {
     planning::PlannerOptions options;
+    // Thousands of small searches (a task per lane): h^max costs a fraction of LM-cut per
+    // state, and these searches expand few.
+    options.heuristic = heuristics::HeuristicKind::HMAX;
     options.limits.stop = deadline.stop_flag();
     if (deadline.limited())
         options.limits.time_limit_s = std::max(1e-3, deadline.remaining_seconds());
