@@ -43,9 +43,8 @@ struct ReplayRow {
 };
 
 // Throws pddl::ParseError "FILE:LINE:COL: error: ..." for a file that cannot be read or is
-// not a regular file (FILE:0:0), a
-// header without `task`, an unknown column, a row with too many cells, a number that is not
-// one, or a problem file that cannot be read.
+// not a regular file ("FILE: error: ..."), a header without `task`, an unknown column, a row with
+// too many cells, a number that is not one, or a problem file that cannot be read.
 std::vector<ReplayRow> read_replay_file(const std::string &path);
 
 // Names the task of every row with `from` and `to` by `name_of(from, to, why)` (nullopt:

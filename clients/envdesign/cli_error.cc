@@ -38,12 +38,18 @@ void print_error_json(int exit_code, const std::string &message,
 }
 
 std::optional<std::pair<pddl::Location, std::string>> split_file_error(const std::string &text) {
-    static const std::regex form(R"(^([^\n]+):([0-9]+):([0-9]+): error: )");
+    static const std::regex placed(R"(^([^\n]+):([0-9]+):([0-9]+): error: )");
+    // A file as a whole ("spec.textproto: error: cannot open file: ..."): no spaces in the
+    // name, so that a sentence with ": error: " in it is not taken for a file.
+    static const std::regex whole(R"(^([^\s:][^\s]*): error: )");
     std::smatch m;
-    if (!std::regex_search(text, m, form))
-        return std::nullopt;
-    pddl::Location where{m[1].str(), std::stoi(m[2].str()), std::stoi(m[3].str())};
-    return std::make_pair(where, text.substr(m.length(0)));
+    if (std::regex_search(text, m, placed)) {
+        pddl::Location where{m[1].str(), std::stoi(m[2].str()), std::stoi(m[3].str())};
+        return std::make_pair(where, text.substr(m.length(0)));
+    }
+    if (std::regex_search(text, m, whole))
+        return std::make_pair(pddl::Location{m[1].str(), 0, 0}, text.substr(m.length(0)));
+    return std::nullopt;
 }
 
 int report_failure(bool json, int exit_code, const std::string &message,

@@ -37,7 +37,8 @@ nlohmann::json error_json(int exit_code, const std::string &message,
                           const std::optional<pddl::Location> &where = std::nullopt);
 
 // "FILE:LINE:COL: error: MESSAGE" (as the coordinator sends bad input back) -> the place and
-// MESSAGE; nullopt for text of another form.
+// MESSAGE; "FILE: error: MESSAGE" (a file that cannot be read) -> FILE at line 0 and MESSAGE;
+// nullopt for text of another form.
 std::optional<std::pair<pddl::Location, std::string>> split_file_error(const std::string &text);
 
 // Prints error_json(...) on stdout, one line.

@@ -33,6 +33,7 @@ design::DesignSearchOptions search_options(const DesignFlags &flags,
     options.method = flags.search == "exhaustive" ? design::SearchMethod::EXHAUSTIVE
                                                   : design::SearchMethod::WITNESS;
     options.ranking = flags.ranking;
+    options.ranking_all = flags.ranking_all;
     return options;
 }
 
@@ -47,6 +48,10 @@ extern "C" void on_interrupt(int signal) {
 // A client of the coordinator at `flags.connect`: the same search, run by the cluster.
 // Ctrl-C (or SIGTERM) cancels the request; the coordinator's best design so far is printed.
 int run_design_remote(const DesignFlags &flags) {
+    // TODO(issue 25): carry it in design_request_t; the coordinator leaves padded designs out.
+    if (flags.ranking_all)
+        throw CommandError(2, "--ranking-all does not travel to a coordinator yet: run it "
+                              "without --connect");
     if (flags.workers != 1)
         spdlog::warn("--workers does not apply with --connect: the cluster's planners work");
     std::signal(SIGINT, on_interrupt);
@@ -94,8 +99,11 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
         ->check(CLI::IsMember({"witness", "exhaustive"}));
     command
         .add_option("--ranking", flags.ranking,
-                    "list the N best designs, best first (0: the best alone)")
+                    "list the N best designs in which every modification pays for itself, best "
+                    "first (0: the best alone)")
         ->check(CLI::Range(0, 100000));
+    command.add_flag("--ranking-all", flags.ranking_all,
+                     "with --ranking: padded designs too (a modification that does not pay)");
     command.add_option("--prune", flags.prune, "none (exact) | relevant (the paper's pruning)")
         ->check(CLI::IsMember({"none", "relevant"}));
     command.add_option("--connect", flags.connect, "LCM URL of a running coordinator");
@@ -147,7 +155,7 @@ int run_design(const DesignFlags &flags) {
     if (result.limit_reached)
         spdlog::warn("{}; the design is the best found",
                      interrupted ? "interrupted" : "the time limit stopped the search");
-    return result.limit_reached ? 4 : 0;
+    return message.exit_code; // 3: proven that every design's objective is infinite
 }
 
 } // namespace envdesign::cli

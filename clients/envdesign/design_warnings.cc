@@ -40,8 +40,11 @@ std::vector<std::string> unsolvable_task_warnings(const design::DesignProblem &p
 
 std::vector<std::string> remote_spec_warnings(const std::string &spec_path) {
     try {
-        if (auto warning = spec::probability_warning(spec::read_spec_file(spec_path)))
-            return {*warning};
+        // Parsed only (the coordinator checks the rest): the warnings are the loader's.
+        spec::SpecFile spec = spec::read_spec_file(spec_path);
+        return spec::load_design_problem(spec, spec::DiskFiles(spec.path),
+                                         spec::Checks::TRUSTED_BY_HASH)
+            .warnings;
     } catch (const pddl::ParseError &) { // the coordinator's answer names it
     }
     return {};

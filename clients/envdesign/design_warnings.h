@@ -1,8 +1,9 @@
 #pragma once
 // The warnings of `envdesign design`: on stderr as "warning: ..." lines and in the JSON
 // result as "warnings": [...]. A spec the reader accepted but may not mean (probabilities not
-// summing to 1), and tasks that are unsolvable in the unmodified models, each with the reason
-// (so that `objective: inf` comes with a word why).
+// summing to 1, two problems of a task with different goals: DesignProblem::warnings), and tasks
+// that are unsolvable in the unmodified models, each with the reason (so that `objective: inf`
+// comes with a word why).
 
 #include "design/deadline.h"
 #include "design/design_search.h"
@@ -20,8 +21,8 @@ std::vector<std::string> unsolvable_task_warnings(const design::DesignProblem &p
                                                   design::PlanCache &planner,
                                                   const design::Deadline &deadline);
 
-// With --connect: the warnings of the spec file read here (the coordinator reads it again
-// and reports bad input; a spec that does not read gives none here).
+// With --connect: the loader's warnings of the spec file read here (parsed only: the
+// coordinator checks it again and reports bad input; a spec that does not read gives none).
 std::vector<std::string> remote_spec_warnings(const std::string &spec_path);
 
 // With --connect: the unsolvable-task lines of `result_json` (the coordinator's result, whose

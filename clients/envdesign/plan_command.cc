@@ -1,6 +1,6 @@
 #include "plan_command.h"
 
-#include "cli_error.h"
+#include "output_file.h"
 
 #include "pddl/parse_error.h"
 #include "planning/planner.h"
@@ -10,7 +10,6 @@
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
 
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -96,6 +95,8 @@ int run_plan(const PlanFlags &flags) {
     options.limits.time_limit_s = flags.time_limit_s;
     options.limits.memory_limit_bytes =
         static_cast<std::size_t>(flags.memory_limit_mb * 1024 * 1024);
+    if (!flags.plan_file.empty())
+        check_output_path(flags.plan_file);
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
     planning::PlanReport report = planning::plan_files(flags.domain, flags.problem, options);
     log_statistics(report);
@@ -108,11 +109,7 @@ int run_plan(const PlanFlags &flags) {
     else if (report.status == search::SearchStatus::SOLVED)
         std::cout << sas_plan(report);
     if (!flags.plan_file.empty() && report.status == search::SearchStatus::SOLVED) {
-        std::ofstream out(flags.plan_file);
-        out << sas_plan(report);
-        out.close(); // flushes: a full disk shows only here
-        if (!out)
-            throw CommandError(1, "cannot write the plan to " + flags.plan_file);
+        write_output_file(flags.plan_file, sas_plan(report));
     }
     return exit_code(report.status);
 }

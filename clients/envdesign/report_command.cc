@@ -2,6 +2,7 @@
 
 #include "cli_error.h"
 #include "local_run.h"
+#include "output_file.h"
 #include "report_floor.h"
 #include "report_html.h"
 
@@ -14,7 +15,6 @@
 #include <spdlog/spdlog.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <unistd.h>
 
@@ -59,6 +59,7 @@ client::ReportExtras plans_before(const design::DesignProblem &problem, LocalRun
 int run_report(const ReportFlags &flags) {
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
     std::optional<design::DesignProblem> problem = spec::load_design_problem(flags.spec);
+    check_output_path(flags.output);
     design::DesignSearchOptions options;
     options.max_design_size = problem->max_design_size;
     double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem->time_limit_s;
@@ -89,14 +90,12 @@ int run_report(const ReportFlags &flags) {
     } catch (const client::PlotError &e) {
         throw CommandError(1, e.what());
     }
-    std::ofstream file(flags.output, std::ios::binary);
-    file << page;
-    file.close();
-    if (!file)
-        throw CommandError(1, "cannot write " + flags.output);
+    write_output_file(flags.output, page);
     spdlog::info("wrote {} ({} bytes): {}", flags.output, page.size(),
-                 message.status == "optimal" ? "the optimal design" : "the best design found");
-    return message.limit_reached ? 4 : 0;
+                 message.status == "optimal"      ? "the optimal design"
+                 : message.status == "unsolvable" ? "no design has a finite objective"
+                                                  : "the best design found");
+    return message.exit_code;
 }
 
 } // namespace envdesign::cli

@@ -27,7 +27,9 @@ void add_watch_flags(CLI::App &command, WatchFlags &flags) {
     command.add_option("--seconds", flags.seconds, "stop after S seconds (0: at Ctrl-C)")
         ->check(service::number_in(design::TIME_LIMIT_S))
         ->capture_default_str();
-    command.add_flag("--json", flags.json, "JSON lines, one object a message");
+    command.add_flag("--json", flags.json,
+                     "one JSON object a line for every message (in text a result takes several "
+                     "lines)");
     command.add_flag("--status", flags.status, "also the services' status (once a second each)");
 }
 

@@ -63,6 +63,18 @@ std::vector<envdesign::design_point_t> ranking_message(const design::DesignProbl
     return out;
 }
 
+// The search proved that no design has a finite objective: which tasks the best design
+// (every design is as bad) leaves without a finite IE or robot cost.
+std::string no_finite_design(const design::DesignProblem &problem,
+                             const design::EvaluatedDesign &best) {
+    std::string tasks;
+    for (std::size_t i = 0; i < best.tasks.size() && i < problem.tasks.size(); ++i)
+        if (!(best.tasks[i].ie < design::INF) || !(best.tasks[i].robot_cost < design::INF))
+            tasks += (tasks.empty() ? "'" : ", '") + problem.tasks[i].name + "'";
+    std::string why = "every design has an infinite objective";
+    return tasks.empty() ? why : why + ": no design gives task(s) " + tasks + " a finite IE";
+}
+
 } // namespace
 
 envdesign::design_result_t result_message(const design::DesignProblem &problem,
@@ -70,8 +82,13 @@ envdesign::design_result_t result_message(const design::DesignProblem &problem,
                                           const TransportCounters &transport,
                                           const design::Explanation *explanation) {
     envdesign::design_result_t m{};
-    m.exit_code = result.limit_reached ? 4 : 0;
-    m.status = result.optimal ? "optimal" : "best_found";
+    // Proven (the search is exact and complete) like `plan` on an unsolvable problem: exit 3.
+    bool unsolvable = result.optimal && !result.limit_reached && result.best &&
+                      !(result.best->objective.value < design::INF);
+    m.exit_code = result.limit_reached ? 4 : unsolvable ? 3 : 0;
+    m.status = unsolvable ? "unsolvable" : result.optimal ? "optimal" : "best_found";
+    if (unsolvable)
+        m.error = no_finite_design(problem, *result.best);
     m.has_design = result.best.has_value();
     if (result.best) {
         m.design = design::design_names(problem, result.best->ranked.configuration);

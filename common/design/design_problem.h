@@ -56,7 +56,8 @@ struct DesignProblem {
     int max_design_size = 0; // 0: no limit
     double time_limit_s = 0; // 0: no limit
     // What the spec reader accepted but the author may not have meant ("SPEC:LINE:COL:
-    // warning: ..."): task probabilities that do not sum to 1.
+    // warning: ..."): task probabilities that do not sum to 1, a task whose two problems
+    // have different goals.
     std::vector<std::string> warnings;
 };
 

@@ -33,7 +33,7 @@ public:
     Search(const DesignProblem &problem, Evaluator &evaluator, const DesignSearchOptions &options,
            const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          ranking_(options.ranking) {
+          ranking_(options.ranking, options.ranking_all ? Padding::LISTED : Padding::LEFT_OUT) {
         int n = static_cast<int>(problem.modifications.size());
         max_size_ = options.max_design_size > 0 ? std::min(options.max_design_size, n) : n;
         std::vector<double> costs;
@@ -277,13 +277,16 @@ DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
     // explanation), not only on its witness plans, so the witness argument does not hold;
     // the exhaustive search (with its bounds, which do hold) stays exact.
     bool explaining = problem.weights.behaviour == RobotBehaviour::EXPLAINING;
-    if (options.method == SearchMethod::WITNESS && !options.relevant && !explaining)
-        return search_witness(problem, evaluator, options, progress);
-    DesignResult result = Search(problem, evaluator, options, progress).run();
-    if (options.method == SearchMethod::WITNESS && !options.relevant)
+    bool witness = options.method == SearchMethod::WITNESS && !options.relevant;
+    DesignResult result = witness && !explaining
+                              ? search_witness(problem, evaluator, options, progress)
+                              : Search(problem, evaluator, options, progress).run();
+    if (witness && explaining)
         result.notes.push_back("robot_behaviour EXPLAINING: the witness search does not apply "
                                "(explanations depend on every model difference); searched "
                                "exhaustively");
+    if (options.ranking > 1 && !options.ranking_all)
+        result.notes.push_back(RANKING_NOTE);
     return result;
 }
 

@@ -57,6 +57,9 @@ struct DesignSearchOptions {
     // The N best designs, best first, in ranks_before order (DesignResult::ranking); 0 or 1:
     // only the best. The searches then prune against the N-th best found so far.
     int ranking = 0;
+    // Padded designs (a modification that does not pay for itself, ranking.h) in the ranking
+    // too (--ranking-all); by default they are left out and a note says so.
+    bool ranking_all = false;
 };
 
 struct SearchProgress {

@@ -46,10 +46,14 @@ void ProgressPrinter::update(const SearchProgress &p) {
 
 std::string ProgressPrinter::summary(const DesignResult &r) {
     const DesignCounters &c = r.counters;
-    std::string line = "design: " + std::to_string(c.configurations_evaluated) + " of " +
-                       std::to_string(c.configurations_total) + " configurations evaluated, " +
-                       std::to_string(c.configurations_abandoned) + " abandoned and " +
-                       std::to_string(c.configurations_skipped) + " skipped by the bound";
+    // What the search itself did: the exhaustive search considers every subset up to the
+    // size limit, the witness search only those it generates; the explanation's evaluations
+    // (the result's break-even counts them) come after.
+    std::string line = "design: the search considered " + std::to_string(c.configurations_total) +
+                       " configurations: " + std::to_string(c.configurations_evaluated) +
+                       " evaluated in full, " + std::to_string(c.configurations_abandoned) +
+                       " abandoned and " + std::to_string(c.configurations_skipped) +
+                       " skipped by the bound";
     if (c.tasks_inherited > 0)
         line += ", " + std::to_string(c.tasks_inherited) + " task evaluations inherited";
     if (c.configurations_pruned > 0)

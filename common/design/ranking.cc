@@ -6,35 +6,132 @@
 
 namespace envdesign::design {
 
-Ranking::Ranking(int size) : size_(std::max(1, size)) {}
+Ranking::Ranking(int size, Padding padding) : size_(std::max(1, size)), padding_(padding) {}
 
 bool Ranking::offer(const RankedDesign &design) {
+    if (padding_ == Padding::LEFT_OUT &&
+        known_.emplace(design.configuration, design.objective).second)
+        reclassify(); // it may pad or confirm designs one modification larger
     if (!(design.objective < INF))
         return false;
-    for (const RankedDesign &d : designs_)
-        if (d.configuration == design.configuration)
+    for (const Entry &e : entries_)
+        if (e.design.configuration == design.configuration)
             return false;
-    auto place = std::find_if(designs_.begin(), designs_.end(),
-                              [&](const RankedDesign &d) { return ranks_before(design, d); });
-    if (place - designs_.begin() >= size_)
+    if (full() && !ranks_before(design, entries_[last_].design))
         return false;
-    designs_.insert(place, design);
-    if (static_cast<int>(designs_.size()) > size_)
-        designs_.pop_back();
+    auto place = std::find_if(entries_.begin(), entries_.end(),
+                              [&](const Entry &e) { return ranks_before(design, e.design); });
+    Entry entry{design};
+    classify(entry);
+    entries_.insert(place, entry);
+    list();
     return true;
 }
 
-double Ranking::threshold() const { return full() ? designs_.back().objective : INF; }
+void Ranking::add_cone(const RankedDesign &base, const std::vector<int> &free,
+                       const std::vector<double> &weights, int max_size) {
+    if (padding_ != Padding::LEFT_OUT || !(base.objective < INF) || free.empty())
+        return;
+    cones_.push_back({base, free, weights, max_size});
+    reclassify();
+}
+
+double Ranking::threshold() const { return full() ? entries_[last_].design.objective : INF; }
 
 bool Ranking::may_enter(double bound, std::size_t modifications) const {
     if (!(bound < INF))
         return false;
     if (!full())
         return true;
-    const RankedDesign &last = designs_.back();
+    const RankedDesign &last = entries_[last_].design;
     if (nearly_equal(bound, last.objective))
         return modifications <= last.configuration.size();
     return bound < last.objective;
+}
+
+// The objective of `c` if it was offered, or is a member of a cone: base + E, E a non-empty
+// subset of the cone's free modifications, the base's objective plus E's weights.
+std::optional<double> Ranking::known_objective(const Configuration &c) const {
+    if (auto it = known_.find(c); it != known_.end())
+        return it->second;
+    for (const Cone &cone : cones_) {
+        const Configuration &b = cone.base.configuration;
+        if (c.size() <= b.size() ||
+            (cone.max_size > 0 && c.size() > static_cast<std::size_t>(cone.max_size)) ||
+            !std::includes(c.begin(), c.end(), b.begin(), b.end()))
+            continue;
+        double value = cone.base.objective;
+        bool member = true;
+        for (int m : c) {
+            if (std::binary_search(b.begin(), b.end(), m))
+                continue;
+            auto f = std::lower_bound(cone.free.begin(), cone.free.end(), m);
+            member = member && f != cone.free.end() && *f == m;
+            if (!member)
+                break;
+            value += cone.weights[static_cast<std::size_t>(f - cone.free.begin())];
+        }
+        if (member)
+            return value;
+    }
+    return std::nullopt;
+}
+
+// Padded: some design one modification smaller has an objective not clearly greater.
+// Confirmed: every such design's objective is known.
+void Ranking::classify(Entry &entry) const {
+    if (padding_ != Padding::LEFT_OUT) {
+        entry.confirmed = true;
+        return;
+    }
+    const Configuration &d = entry.design.configuration;
+    bool all_known = true;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        Configuration smaller = d;
+        smaller.erase(smaller.begin() + static_cast<std::ptrdiff_t>(i));
+        std::optional<double> value = known_objective(smaller);
+        if (!value) {
+            all_known = false;
+            continue;
+        }
+        if (!clearly_greater(*value, entry.design.objective)) {
+            entry.padded = entry.confirmed = true;
+            return;
+        }
+    }
+    entry.confirmed = all_known;
+}
+
+// Padded and confirmed are final; the other entries may change with what became known.
+void Ranking::reclassify() {
+    bool changed = false;
+    for (Entry &e : entries_)
+        if (!e.confirmed) {
+            classify(e);
+            changed = changed || e.confirmed;
+        }
+    if (changed)
+        list();
+}
+
+// The listed designs: the first `size` entries not padded. The ranking is full at the
+// `size`-th entry confirmed not padded; entries after it can never be listed (whatever
+// enters later ranks before them), so they are dropped.
+void Ranking::list() {
+    listed_.clear();
+    last_ = SIZE_MAX;
+    int counted = 0;
+    for (std::size_t i = 0; i < entries_.size(); ++i) {
+        if (entries_[i].padded)
+            continue;
+        if (static_cast<int>(listed_.size()) < size_)
+            listed_.push_back(entries_[i].design);
+        if (entries_[i].confirmed && ++counted == size_) {
+            last_ = i;
+            entries_.resize(i + 1);
+            return;
+        }
+    }
 }
 
 namespace {
@@ -70,6 +167,17 @@ long long offer_cone(const DesignProblem &problem, const Configuration &design,
         max_size > 0 ? max_size - static_cast<int>(design.size()) : static_cast<int>(order.size());
     if (order.empty() || room <= 0)
         return 0;
+    if (ranking.padding() == Padding::LEFT_OUT) {
+        std::vector<int> ascending = order;
+        std::sort(ascending.begin(), ascending.end());
+        std::vector<double> weights;
+        for (int m : ascending)
+            weights.push_back(weight(m));
+        double cost = design_cost(problem, design);
+        ranking.add_cone({objective_lower_bound(problem, cost, tasks), cost, design}, ascending,
+                         weights, max_size);
+        return 0;
+    }
     // Every non-empty subset once: a member's successors add the next position, or move
     // its last one on. Neither is cheaper nor smaller, so a member that cannot enter has
     // no successor that can (the objective grows with beta * cost).

@@ -8,10 +8,13 @@ namespace envdesign::pddl {
 
 struct Location {
     std::string file;
-    int line = 0;  // 1-based; 0 when unknown
+    int line = 0; // 1-based; 0 when unknown (the file as a whole: it cannot be opened)
     int column = 0;
 
+    // "FILE:LINE:COL", or "FILE" alone when the line is not known.
     std::string to_string() const {
+        if (line <= 0)
+            return file;
         return file + ":" + std::to_string(line) + ":" + std::to_string(column);
     }
 };
@@ -31,4 +34,4 @@ private:
     std::string message_;
 };
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

@@ -4,6 +4,7 @@
 #include "pddl/parser.h"
 #include "spec/spec_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -116,6 +117,9 @@ private:
                 return pddl::parse_problem_text(human_file.content, human_file.name,
                                                 problem_.human_domain, problem_.robot_domain.name);
             });
+            if (!t.human_problem().empty())
+                if (auto warning = goal_warning(i, task))
+                    problem_.warnings.push_back(*warning);
             problem_.tasks.push_back(std::move(task));
         }
         if (total <= 0)
@@ -124,6 +128,33 @@ private:
             task.probability /= total;
         if (auto warning = probability_warning(spec_))
             problem_.warnings.push_back(*warning);
+    }
+
+    // Two problems of one task with different goals are most often a copy not brought up to
+    // date: observers would then be judged on another task than the robot does.
+    std::optional<std::string> goal_warning(int i, const DesignTask &task) const {
+        auto goal = [](const pddl::Problem &p) {
+            std::vector<std::string> literals;
+            for (const auto &literal : p.goal)
+                literals.push_back(literal.to_string());
+            std::sort(literals.begin(), literals.end());
+            return literals;
+        };
+        std::vector<std::string> robot = goal(task.robot_problem);
+        std::vector<std::string> human = goal(task.human_problem);
+        if (robot == human)
+            return std::nullopt;
+        auto shown = [](const std::vector<std::string> &literals) {
+            std::string text = "(and";
+            for (const auto &l : literals)
+                text += " " + l;
+            return text + ")";
+        };
+        std::string at = "task[" + std::to_string(i) + "].human_problem";
+        return spec_.at(at).to_string() + ": warning: the two problems of task '" + task.name +
+               "' have different goals: " + shown(robot) + " in the robot's (" +
+               m_.task(i).problem() + "), " + shown(human) + " in the observers' (" +
+               m_.task(i).human_problem() + ")";
     }
 
     void load_weights() {

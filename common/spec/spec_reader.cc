@@ -3,6 +3,7 @@
 #include "pddl/input_file.h"
 #include "pddl/text_location.h"
 #include "spec/json_positions.h"
+#include "spec/spec_suggestions.h"
 
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/text_format.h>
@@ -100,17 +101,58 @@ private:
     std::map<std::string, pddl::Location> positions_;
 };
 
+// protobuf's text-format wording for an unknown field or enum value -> the names there are,
+// with the nearest one (spec_suggestions.h); `word` is set to what the file wrote. Any other
+// message as it is.
+std::string text_format_message(const std::string &message, std::string &word) {
+    static const std::regex no_field(R"re(Message type "([\w.]+)" has no field named "(\w+)")re");
+    static const std::regex no_value(
+        R"re(Unknown enumeration value of "([^"]*)" for field "(\w+)")re");
+    std::smatch m;
+    if (std::regex_search(message, m, no_field))
+        if (auto *type = gp::DescriptorPool::generated_pool()->FindMessageTypeByName(m[1].str())) {
+            word = m[2].str();
+            return unknown_field_message(*type, word, word);
+        }
+    if (std::regex_search(message, m, no_value))
+        if (auto *type = enum_of_field(m[2].str())) {
+            word = m[1].str();
+            return bad_enum_message(*type, m[2].str(), word);
+        }
+    return message;
+}
+
+// protobuf places those errors at the token after the word at fault; the column of the word
+// itself when it is written before `column` on `line` (both 0-based), else `column`.
+int column_of_word(const std::string &text, int line, int column, const std::string &word) {
+    std::size_t start = 0;
+    for (int l = 0; l < line && start != std::string::npos; ++l) {
+        start = text.find('\n', start);
+        if (start != std::string::npos)
+            ++start;
+    }
+    if (word.empty() || start == std::string::npos || column <= 0)
+        return column;
+    std::size_t at = text.rfind(word, start + static_cast<std::size_t>(column) - 1);
+    return at != std::string::npos && at >= start ? static_cast<int>(at - start) : column;
+}
+
 class FirstError : public gp::io::ErrorCollector {
 public:
-    explicit FirstError(std::string file) : file_(std::move(file)) {}
+    FirstError(const std::string &text, std::string file) : text_(text), file_(std::move(file)) {}
 
     void AddError(int line, gp::io::ColumnNumber column, const std::string &message) override {
-        if (!error_)
-            error_ = pddl::ParseError({file_, line + 1, column + 1}, message);
+        if (error_)
+            return;
+        std::string word;
+        std::string words = text_format_message(message, word);
+        int at = column_of_word(text_, line, column, word);
+        error_ = pddl::ParseError({file_, line + 1, at + 1}, words);
     }
     const std::optional<pddl::ParseError> &error() const { return error_; }
 
 private:
+    const std::string &text_;
     std::string file_;
     std::optional<pddl::ParseError> error_;
 };
@@ -133,18 +175,36 @@ pddl::ParseError json_message_error(const std::string &message, const JsonLocati
         rest = message.substr(close + 1);
     } else if (!message.empty() && message[0] == ':') {
         rest = message;
+    } else if (ends_with(message, unknown)) { // "taks: Cannot find field." at the top
+        std::string key = snake_case(message.substr(0, message.size() - unknown.size()));
+        return pddl::ParseError(
+            locations.locate_key(key),
+            unknown_field_message(*proto::DesignProblem::descriptor(), key, key));
     } else {
         auto colon = message.find(':');
         std::string key = colon == std::string::npos ? "" : message.substr(0, colon);
         return pddl::ParseError(locations.locate_key(key), message);
     }
     rest.erase(0, rest.find_first_not_of(" :"));
-    if (rest.size() > unknown.size() &&
-        rest.compare(rest.size() - unknown.size(), unknown.size(), unknown) == 0) {
+    if (rest.size() > unknown.size() && ends_with(rest, unknown)) {
         std::string key = snake_case(rest.substr(0, rest.size() - unknown.size()));
         std::string field = path.empty() ? key : path + "." + key;
-        return pddl::ParseError(locations.locate(field), "unknown field '" + field + "'");
+        const gp::Descriptor *type = message_type_at(path);
+        return pddl::ParseError(locations.locate(field),
+                                type ? unknown_field_message(*type, key, field)
+                                     : "unknown field '" + field + "'");
     }
+    // An enum value: 'invalid value "HUMANS" for type type.googleapis.com/envdesign.proto.X'.
+    static const std::regex bad_value(
+        R"re(invalid value "([^"]*)" for type (?:[\w.]+/)?([\w.]+))re");
+    std::smatch v;
+    if (std::regex_search(rest, v, bad_value))
+        if (auto *type = gp::DescriptorPool::generated_pool()->FindEnumTypeByName(v[2].str())) {
+            auto dot = path.find_last_of('.');
+            std::string field = path.substr(dot == std::string::npos ? 0 : dot + 1);
+            return pddl::ParseError(locations.locate(path),
+                                    bad_enum_message(*type, field, v[1].str()));
+        }
     // A duplicate key, or two members of a oneof (two kinds in one edit): at the second key.
     static const std::regex twice(R"(oneof field '_?(\w+)' is already set\. Cannot set '(\w+)')");
     std::smatch m;
@@ -185,7 +245,7 @@ SpecFile read_json(const std::string &text, const std::string &path) {
 
 SpecFile read_text(const std::string &text, const std::string &path) {
     auto locations = std::make_unique<TextLocations>(path);
-    FirstError errors(path);
+    FirstError errors(text, path);
     gp::TextFormat::Parser parser;
     parser.RecordErrorsTo(&errors);
     parser.WriteLocationsTo(&locations->tree());

@@ -13,7 +13,7 @@ namespace {
 using namespace std::chrono_literals;
 
 // 100 arrivals of the 9:1 mix in a window of 100: the watcher's last distribution line for
-// "restaurant" says exactly 0.9 / 0.1, from 100 samples; in text, one line a message.
+// "restaurant" says exactly 0.9 / 0.1, from 100 samples; in text a distribution is one line.
 TEST(WatchBridge, PrintsTheDistributionEstimates) {
     std::string dir = scratch("watch");
     auto bridge = start_bridge(dir, 80, 7780, {"--estimator", "window:100"});

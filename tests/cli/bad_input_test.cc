@@ -77,7 +77,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"unsupported-requirement.pddl", "ok-problem.pddl",
                  "unsupported-requirement.pddl:2:26: error: requirement ':durative-actions' is "
                  "not supported"},
-        BadInput{"missing.pddl", "ok-problem.pddl", "missing.pddl:0:0: error: cannot open file"}));
+        BadInput{"missing.pddl", "ok-problem.pddl",
+                 "missing.pddl: error: cannot open file: No such file or directory"}));
 
 TEST(BadFlags, UnknownHeuristicIsAUsageError) {
     const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/bad/";

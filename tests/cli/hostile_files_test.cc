@@ -55,7 +55,7 @@ TEST_F(HostileFiles, AFifoIsRefusedNotWaitedFor) {
     ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
     auto r = run_bounded("plan " + fifo + " " + PROBLEM);
     EXPECT_EQ(r.exit_code, 2) << r.out;
-    EXPECT_NE(r.out.find(fifo + ":0:0: error: not a regular file (a FIFO)"), std::string::npos)
+    EXPECT_NE(r.out.find(fifo + ": error: not a regular file (a FIFO)"), std::string::npos)
         << r.out;
     r = run_bounded("design " + fifo);
     EXPECT_EQ(r.exit_code, 2) << r.out;
@@ -66,7 +66,7 @@ TEST_F(HostileFiles, AFifoIsRefusedNotWaitedFor) {
 TEST_F(HostileFiles, DevicesAndDirectoriesAreRefused) {
     auto r = run_bounded("plan /dev/zero " + PROBLEM); // was read without bound
     EXPECT_EQ(r.exit_code, 2) << r.out;
-    EXPECT_NE(r.out.find("/dev/zero:0:0: error: not a regular file (a device)"), std::string::npos)
+    EXPECT_NE(r.out.find("/dev/zero: error: not a regular file (a device)"), std::string::npos)
         << r.out;
     r = run_bounded("plan " + DOMAIN + " " + dir_.string());
     EXPECT_EQ(r.exit_code, 2) << r.out;
@@ -83,7 +83,7 @@ TEST_F(HostileFiles, FilesBeyondTheSizeLimitAreRefused) {
     fs::resize_file(big, (64u << 20) + 1); // sparse: nothing is written
     auto r = run_bounded("plan " + big + " " + PROBLEM);
     EXPECT_EQ(r.exit_code, 2) << r.out;
-    EXPECT_NE(r.out.find(big + ":0:0: error: the file is larger than 67108864 bytes"),
+    EXPECT_NE(r.out.find(big + ": error: the file is larger than 67108864 bytes"),
               std::string::npos)
         << r.out;
 }
@@ -123,7 +123,8 @@ TEST_F(HostileFiles, WritesToAFullDeviceFail) {
     EXPECT_EQ(r.exit_code, 1) << r.out;
     r = run_bounded("plan " + DOMAIN + " " + PROBLEM + " --plan-file /dev/full");
     EXPECT_EQ(r.exit_code, 1) << r.out;
-    EXPECT_NE(r.out.find("cannot write the plan to /dev/full"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("cannot write '/dev/full': No space left on device"), std::string::npos)
+        << r.out;
     r = run_bounded("design " + EXAMPLES + "/a-one-task-t1.textproto --json", "/dev/full");
     EXPECT_EQ(r.exit_code, 1) << r.out;
 }

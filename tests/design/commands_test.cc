@@ -110,7 +110,11 @@ TEST(DesignCommand, OneSummaryLineOnStderrWhenNotATerminal) {
                           "a-one-task-t1.textproto --search exhaustive 3>&1 1>/dev/null 2>&3 | cat",
                       false);
     EXPECT_EQ(result.exit_code, 0);
-    EXPECT_EQ(result.out.rfind("design: 1 of 64 configurations evaluated", 0), 0u) << result.out;
+    EXPECT_EQ(result.out.rfind("design: the search considered 64 configurations: 1 evaluated in "
+                               "full, 0 abandoned and 63 skipped by the bound",
+                               0),
+              0u)
+        << result.out;
     EXPECT_EQ(std::count(result.out.begin(), result.out.end(), '\n'), 1) << result.out;
 }
 

@@ -207,6 +207,7 @@ TEST_P(AgainstExhaustive, BoundsNeverChangeTheRanking) {
         DesignSearchOptions options = exhaustive_search();
         options.max_design_size = s.max_size;
         options.ranking = n;
+        options.ranking_all = true; // every subset, padded ones too (ranking_test.cc: without)
         DesignResult r = search_design(p, evaluator, options);
         EXPECT_TRUE(r.optimal);
         ASSERT_EQ(r.ranking.size(), std::min<std::size_t>(n, all.size())) << "N = " << n;
@@ -306,6 +307,7 @@ TEST(DesignSearch, ATimeLimitGivesTheBestRankingFoundSoFar) {
     ScriptedEvaluator evaluator(landscape, 9); // the budget runs out during size 1
     DesignSearchOptions options = exhaustive_search();
     options.ranking = 3;
+    options.ranking_all = true;
     DesignResult r = search_design(p, evaluator, options);
     EXPECT_FALSE(r.optimal);
     ASSERT_EQ(r.ranking.size(), 3u); // {} and 3 designs of size 1 were evaluated in full

@@ -1,5 +1,6 @@
 // The ranking of the N best designs (common/design/ranking.h): its order and threshold by
-// hand, and offer_cone against sorting every member of a cone on seeded random costs.
+// hand, offer_cone against sorting every member of a cone on seeded random costs, and the
+// padded designs left out by default, by hand and against filtering every design sorted.
 
 #include "design/ranking.h"
 
@@ -12,7 +13,7 @@ namespace envdesign::design {
 namespace {
 
 TEST(Ranking, KeepsTheBestInSpecOrderAndPrunesAgainstTheLast) {
-    Ranking r(3);
+    Ranking r(3, Padding::LISTED);
     EXPECT_EQ(r.threshold(), INF);
     EXPECT_TRUE(r.may_enter(1e9, 99)); // not full: anything finite may enter
     EXPECT_FALSE(r.may_enter(INF, 0)); // infinite objectives are not ranked
@@ -72,7 +73,7 @@ TEST(Ranking, OfferConeAgreesWithSortingEveryMember) {
                 free.push_back(m);
         int max_size = static_cast<int>(random() % 4); // 0: no limit
         int size = 1 + static_cast<int>(random() % 8);
-        Ranking ranking(size);
+        Ranking ranking(size, Padding::LISTED);
         std::vector<RankedDesign> everything;
         auto offer = [&](const RankedDesign &d) {
             ranking.offer(d);
@@ -109,6 +110,136 @@ TEST(Ranking, OfferConeAgreesWithSortingEveryMember) {
     // All costs zero: every member ties with the design; only members small enough to enter
     // are visited, not the 2^11 subsets.
     EXPECT_LT(most_offered_of_zero_costs, 100);
+}
+
+// Padded: a design one modification smaller ranks before it. By hand, three listed at most.
+TEST(Ranking, LeavesOutDesignsWithAModificationThatDoesNotPay) {
+    Ranking r(3);
+    EXPECT_EQ(r.padding(), Padding::LEFT_OUT);
+    EXPECT_TRUE(r.offer({5, 0, {}}));
+    EXPECT_TRUE(r.offer({4, 1, {0}}));    // pays for 0: 4 < 5
+    EXPECT_TRUE(r.offer({4, 1, {0, 1}})); // ties {0}: 1 does not pay; kept, not listed
+    EXPECT_TRUE(r.offer({6, 1, {2}}));    // {} is better without 2
+    ASSERT_EQ(r.designs().size(), 2u);
+    EXPECT_FALSE(r.full());
+    EXPECT_EQ(r.threshold(), INF); // two listed: nothing may be pruned yet
+    EXPECT_TRUE(r.offer({3.5, 2, {0, 3}}));
+    ASSERT_EQ(r.designs().size(), 3u);
+    EXPECT_EQ(r.designs()[0].configuration, (Configuration{0, 3}));
+    EXPECT_EQ(r.designs()[1].configuration, (Configuration{0}));
+    EXPECT_EQ(r.designs()[2].configuration, (Configuration{}));
+    // Three listed, but {0, 3} less 3 is not known: it may still turn out padded, so nothing
+    // may be pruned against the third yet.
+    EXPECT_FALSE(r.full());
+    EXPECT_EQ(r.threshold(), INF);
+    // {3} at 4.5 confirms {0, 3}, pays for 3 (it beats {} at 5) and takes the third place.
+    EXPECT_TRUE(r.offer({4.5, 1, {3}}));
+    EXPECT_EQ(r.designs()[2].configuration, (Configuration{3}));
+    EXPECT_TRUE(r.full());
+    EXPECT_EQ(r.threshold(), 4.5);
+    EXPECT_FALSE(r.may_enter(4.5, 2)); // ties the last with more modifications
+    EXPECT_FALSE(r.offer({5, 0, {}})); // offered twice
+    // {3, 9} ties {0, 3} at a lower cost: first. Then {9} at 3 comes, and {3, 9} less 3 is
+    // better: 3 does not pay in {3, 9} after all, which leaves the list.
+    EXPECT_TRUE(r.offer({3.5, 1, {3, 9}}));
+    EXPECT_EQ(r.designs()[0].configuration, (Configuration{3, 9}));
+    EXPECT_TRUE(r.offer({3, 1, {9}}));
+    std::vector<Configuration> listed;
+    for (const auto &d : r.designs())
+        listed.push_back(d.configuration);
+    EXPECT_EQ(listed, (std::vector<Configuration>{{9}, {0, 3}, {0}}));
+    // The first five with every design listed: {0, 1} is third.
+    Ranking all(3, Padding::LISTED);
+    for (const RankedDesign &d : std::vector<RankedDesign>{
+             {5, 0, {}}, {4, 1, {0}}, {4, 1, {0, 1}}, {6, 1, {2}}, {3.5, 2, {0, 3}}})
+        all.offer(d);
+    EXPECT_EQ(all.designs()[1].configuration, (Configuration{0}));
+    EXPECT_EQ(all.designs()[2].configuration, (Configuration{0, 1}));
+}
+
+// Every design of a seeded random landscape offered in random order, some of it as cones,
+// against sorting every design and dropping those with a one-smaller subset before them.
+TEST(Ranking, PaddedDesignsLeftOutAgreeWithFilteringEverySortedDesign) {
+    for (unsigned seed = 0; seed < 300; ++seed) {
+        std::mt19937 random(seed);
+        const int n = 3 + static_cast<int>(random() % 4);
+        std::vector<double> costs;
+        for (int i = 0; i < n; ++i)
+            costs.push_back(static_cast<double>(random() % 3));
+        DesignProblem problem = problem_with_costs(costs, 1.0 + static_cast<double>(random() % 2));
+        // Task values per design: a few levels, so that ties and padding both happen; a
+        // design holding a "dud" keeps the values of the design without it (a cone).
+        std::vector<bool> dud(n);
+        for (int i = 0; i < n; ++i)
+            dud[i] = random() % 3 == 0;
+        std::vector<double> level(1 << n);
+        for (auto &l : level)
+            l = static_cast<double>(random() % 4);
+        auto base_of = [&](int mask) {
+            for (int i = 0; i < n; ++i)
+                if (dud[i])
+                    mask &= ~(1 << i);
+            return mask;
+        };
+        auto config = [&](int mask) {
+            Configuration c;
+            for (int i = 0; i < n; ++i)
+                if (mask >> i & 1)
+                    c.push_back(i);
+            return c;
+        };
+        auto tasks_of = [&](int mask) {
+            TaskExplicability t;
+            t.status = ExplicabilityStatus::SOLVED;
+            t.ie = 1 + level[base_of(mask)], t.robot_cost = 3, t.human_plan_cost = 3;
+            return t;
+        };
+        std::vector<RankedDesign> everything;
+        for (int mask = 0; mask < (1 << n); ++mask) {
+            Configuration c = config(mask);
+            TaskExplicability t = tasks_of(mask);
+            double cost = design_cost(problem, c);
+            everything.push_back({objective_lower_bound(problem, cost, {&t}), cost, c});
+        }
+        int size = 1 + static_cast<int>(random() % 5);
+        Ranking ranking(size);
+        // The designs without duds are offered one by one (in random order), each with its
+        // cone of duds, as the witness search does.
+        std::vector<int> order;
+        for (int mask = 0; mask < (1 << n); ++mask)
+            if (base_of(mask) == mask)
+                order.push_back(mask);
+        std::shuffle(order.begin(), order.end(), random);
+        for (int mask : order) {
+            TaskExplicability t = tasks_of(mask);
+            Configuration c = config(mask);
+            double cost = design_cost(problem, c);
+            ranking.offer({objective_lower_bound(problem, cost, {&t}), cost, c});
+            std::vector<int> free;
+            for (int i = 0; i < n; ++i)
+                if (dud[i])
+                    free.push_back(i);
+            EXPECT_EQ(offer_cone(problem, c, {&t}, free, 0, ranking), 0); // kept as a cone
+        }
+        std::sort(everything.begin(), everything.end(), ranks_before);
+        std::vector<Configuration> want;
+        for (std::size_t i = 0; i < everything.size() && static_cast<int>(want.size()) < size;
+             ++i) {
+            const Configuration &d = everything[i].configuration;
+            bool padded = false;
+            for (std::size_t j = 0; j < i; ++j) {
+                const Configuration &s = everything[j].configuration;
+                padded = padded || (s.size() + 1 == d.size() &&
+                                    std::includes(d.begin(), d.end(), s.begin(), s.end()));
+            }
+            if (!padded)
+                want.push_back(d);
+        }
+        std::vector<Configuration> got;
+        for (const auto &d : ranking.designs())
+            got.push_back(d.configuration);
+        EXPECT_EQ(got, want) << "seed " << seed;
+    }
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace envdesign::design {
@@ -155,6 +156,7 @@ TEST(Restaurant, RankingOfTheSixBestByHand) {
             options.method = method;
             options.hitting_sets = hitting_sets;
             options.ranking = 6;
+            options.ranking_all = true;
             DesignResult r = run(problem, 1, options);
             EXPECT_TRUE(r.optimal);
             ASSERT_EQ(r.ranking.size(), expected.size());
@@ -165,6 +167,34 @@ TEST(Restaurant, RankingOfTheSixBestByHand) {
             }
             EXPECT_EQ(r.ranking[0].configuration, r.best->ranked.configuration);
         }
+    }
+}
+
+// The same by default: 5 and 6 are padded ({00-01} alone is better than 5, rank 1 alone than
+// 6), so they are left out. Next comes {01-02, 01-11, 10-11}, at rank 6's objective: it
+// closes G1's three paths and G2's by c01-c02 (IE 1 for both, f + 90 + 18.75), and each of
+// its pairs leaves a task at IE e^2 (126.877): every barrier pays.
+TEST(Restaurant, RankingWithoutPaddedDesigns) {
+    DesignProblem problem = load_design_problem(DIR + "c-two-tasks-t10.textproto");
+    const std::vector<std::vector<std::string>> expected = {
+        {"barrier-00-01", "barrier-10-11"},
+        {"barrier-01-02", "barrier-11-12"},
+        {"barrier-00-01"},
+        {"barrier-01-02"},
+        {"barrier-01-02", "barrier-01-11", "barrier-10-11"}};
+    for (SearchMethod method : {SearchMethod::WITNESS, SearchMethod::EXHAUSTIVE}) {
+        DesignSearchOptions options;
+        options.method = method;
+        options.ranking = 5;
+        DesignResult r = run(problem, 1, options);
+        EXPECT_TRUE(r.optimal);
+        ASSERT_EQ(r.ranking.size(), expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_EQ(design_names(problem, r.ranking[i].configuration), expected[i])
+                << "rank " << i + 1;
+        EXPECT_NEAR(r.ranking[4].objective, 115.263215599, 1e-6);
+        EXPECT_NE(std::find(r.notes.begin(), r.notes.end(), std::string(RANKING_NOTE)),
+                  r.notes.end());
     }
 }
 

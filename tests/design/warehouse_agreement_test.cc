@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace envdesign::design {
 
 using spec::load_design_problem;
@@ -34,10 +36,10 @@ TEST_P(WarehouseAgreement, SameDesignAsEverySubset) {
         ASSERT_TRUE(got.optimal);
         EXPECT_EQ(got.best->ranked.configuration, want.best->ranked.configuration);
         EXPECT_NEAR(got.best->objective.value, want.best->objective.value, 1e-9);
-        // Every barrier restricts: nothing is added everywhere; the phase proves it or not.
+        // Every barrier restricts: none is weighed with every design; the phase proves it or not.
         bool proven = false;
         for (const std::string &note : got.notes) {
-            EXPECT_EQ(note.find("added to every configuration"), std::string::npos) << note;
+            EXPECT_EQ(note.find("weighs it with every design"), std::string::npos) << note;
             proven = proven || note.find("hitting-set phase") != std::string::npos;
         }
         EXPECT_EQ(proven, hitting_sets);
@@ -57,6 +59,7 @@ TEST(WarehouseRanking, SameRankingAsEverySubset) {
     DesignSearchOptions exhaustive;
     exhaustive.method = SearchMethod::EXHAUSTIVE;
     exhaustive.ranking = 5;
+    exhaustive.ranking_all = true; // ranks 3-5 are padded: the default leaves them out
     LocalEvaluator every(problem, 1);
     DesignResult want = search_design(problem, every, exhaustive);
     ASSERT_TRUE(want.optimal);
@@ -71,6 +74,7 @@ TEST(WarehouseRanking, SameRankingAsEverySubset) {
         DesignSearchOptions witness;
         witness.hitting_sets = hitting_sets;
         witness.ranking = 5;
+        witness.ranking_all = true;
         LocalEvaluator witnessed(problem, 1);
         DesignResult got = search_design(problem, witnessed, witness);
         ASSERT_TRUE(got.optimal);
@@ -80,6 +84,29 @@ TEST(WarehouseRanking, SameRankingAsEverySubset) {
             EXPECT_NEAR(got.ranking[i].objective, want.ranking[i].objective, 1e-9) << i + 1;
         }
     }
+    // By default ranks 3-5 (the best plus a barrier no plan uses) are left out: the two best
+    // stay, and no design listed holds one of them plus one modification.
+    exhaustive.ranking_all = false;
+    LocalEvaluator every_again(problem, 1);
+    DesignResult paying = search_design(problem, every_again, exhaustive);
+    DesignSearchOptions witness;
+    witness.ranking = 5;
+    LocalEvaluator witnessed(problem, 1);
+    DesignResult got = search_design(problem, witnessed, witness);
+    ASSERT_EQ(paying.ranking.size(), 5u);
+    ASSERT_EQ(got.ranking.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) {
+        EXPECT_EQ(got.ranking[i].configuration, paying.ranking[i].configuration) << i + 1;
+        const Configuration &c = paying.ranking[i].configuration;
+        for (std::size_t best = 0; best < 2 && i >= 2; ++best) {
+            const Configuration &b = want.ranking[best].configuration;
+            EXPECT_FALSE(c.size() == b.size() + 1 &&
+                         std::includes(c.begin(), c.end(), b.begin(), b.end()))
+                << "rank " << i + 1 << " is rank " << best + 1 << " padded";
+        }
+    }
+    EXPECT_EQ(paying.ranking[0].configuration, want.ranking[0].configuration);
+    EXPECT_EQ(paying.ranking[1].configuration, want.ranking[1].configuration);
 }
 
 INSTANTIATE_TEST_SUITE_P(Floors, WarehouseAgreement,

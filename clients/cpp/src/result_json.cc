@@ -175,6 +175,8 @@ void put_explanation(json &out, const envdesign::design_result_t &r) {
 json result_json_value(const envdesign::design_result_t &r) {
     json out;
     out["status"] = r.status;
+    if (r.status == "unsolvable")
+        out["reason"] = r.error;
     if (r.has_design) {
         out["design"] = r.design;
         out.update(objective_json(r.best, explaining(r)));

@@ -185,7 +185,10 @@ void ranking_block(std::ostream &out, const envdesign::design_result_t &r) {
 
 std::string result_text(const envdesign::design_result_t &r) {
     std::ostringstream out;
-    out << "status: " << r.status << "\n";
+    out << "status: " << r.status;
+    if (r.status == "unsolvable" && !r.error.empty())
+        out << " (" << r.error << ")";
+    out << "\n";
     if (!r.has_design) {
         out << "no configuration was evaluated in time\n";
         return out.str();

@@ -1,5 +1,6 @@
 // `envdesign watch`: what passes on a bus (results, progress, task distribution estimates,
-// optionally status), one line a message, as text or JSON lines.
+// optionally status). In text a message is one line, but for a result: a header line and
+// the result's text; with JSON, one object a line for every message.
 
 #include "bus/channels.h"
 #include "bus/lcm_url.h"

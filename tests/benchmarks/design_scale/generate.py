@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a design problem of a chosen size (issue 9, "Must show": scalable design problems).
+"""Writes a design problem of a chosen size, to measure how the design search scales.
 
   python3 tests/benchmarks/design_scale/generate.py --kind warehouse --mods 64 --tasks 10 \\
       --seed 1 --out /tmp/wh64 [--show]
