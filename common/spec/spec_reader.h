@@ -36,8 +36,9 @@ struct SpecFile {
     pddl::Location at(const std::string &field_path) const { return locations->locate(field_path); }
 };
 
-// Throws pddl::ParseError "PATH:LINE:COL: error: ..." when the file cannot be read, is not
-// well-formed, or names a field the message does not have.
+// Throws pddl::ParseError "PATH:LINE:COL: error: ..." when the file cannot be read ("PATH:
+// error: ...", no line), is not well-formed, or names a field or enum value the message does
+// not have (with the nearest name: spec_suggestions.h).
 SpecFile read_spec_file(const std::string &path);
 
 // The same from text already in memory; `path` is used for messages and the format is
