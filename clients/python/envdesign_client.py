@@ -280,8 +280,8 @@ def bundle_spec(path):
     try:
         with open(path) as f:
             text = f.read()
-    except OSError:
-        raise SpecError(f"{path}:0:0: error: cannot open file")
+    except OSError as e:  # as the C++ CLI says it: the file, no line
+        raise SpecError(f"{path}: error: cannot open file: {e.strerror}")
     spec = spec_t()
     spec.name, spec.text, spec.files = path, text, []
     seen = set()
