@@ -6,7 +6,11 @@
 
 namespace envdesign::design {
 
-Ranking::Ranking(int size, Padding padding) : size_(std::max(1, size)), padding_(padding) {}
+// The best design alone is never padded (without the modification that would pad it, a
+// design of no worse objective and fewer modifications ranks before it): with one design,
+// nothing is left out, and the best found is the limit at once.
+Ranking::Ranking(int size, Padding padding)
+    : size_(std::max(1, size)), padding_(size <= 1 ? Padding::LISTED : padding) {}
 
 bool Ranking::offer(const RankedDesign &design) {
     if (padding_ == Padding::LEFT_OUT &&
