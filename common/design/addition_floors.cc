@@ -86,6 +86,7 @@ std::optional<std::set<int>> users(const Modification &modification, const Opera
     };
     for (const Edit &edit : modification.edits) {
         for (bool robot : {true, false}) {
+            // The edit's model, if it is the one searched (naming gives no name otherwise).
             if (!(robot ? applies_to_robot(edit.model) : applies_to_human(edit.model)) ||
                 !naming(robot, ""))
                 continue;
@@ -124,21 +125,29 @@ std::optional<std::set<int>> users(const Modification &modification, const Opera
     return out;
 }
 
-planning::PlannerOptions options_for(const Deadline &deadline) {
+// One floor search's time: past it the floor of every plan of A stands in (weaker, still a
+// floor), so that one hard task does not keep the phase from every other.
+constexpr double FLOOR_SEARCH_SECONDS = 1.0;
+
+// `cap_s` > 0: a floor search, one of thousands (a task per lane), mostly small: h^max costs
+// a fraction of LM-cut per state. The one search per task over every plan of A keeps LM-cut.
+planning::PlannerOptions options_for(const Deadline &deadline, double cap_s = 0) {
     planning::PlannerOptions options;
-    // Thousands of small searches (a task per lane): h^max costs a fraction of LM-cut per
-    // state, and these searches expand few.
-    options.heuristic = heuristics::HeuristicKind::HMAX;
+    if (cap_s > 0)
+        options.heuristic = heuristics::HeuristicKind::HMAX;
     options.limits.stop = deadline.stop_flag();
     if (deadline.limited())
         options.limits.time_limit_s = std::max(1e-3, deadline.remaining_seconds());
+    if (cap_s > 0 && (options.limits.time_limit_s <= 0 || cap_s < options.limits.time_limit_s))
+        options.limits.time_limit_s = cap_s;
     return options;
 }
 
 // The least primary cost of a plan of `task`: INF when there is none, nullopt when a limit
 // stopped the search.
-std::optional<double> least_cost(const ground::GroundTask &task, const Deadline &deadline) {
-    planning::PlanReport report = planning::plan_task(task, options_for(deadline));
+std::optional<double> least_cost(const ground::GroundTask &task, const Deadline &deadline,
+                                 double cap_s = 0) {
+    planning::PlanReport report = planning::plan_task(task, options_for(deadline, cap_s));
     if (report.status == search::SearchStatus::SOLVED)
         return static_cast<double>(report.cost);
     if (report.status == search::SearchStatus::FAILED)
@@ -146,8 +155,8 @@ std::optional<double> least_cost(const ground::GroundTask &task, const Deadline 
     return std::nullopt;
 }
 
-// The task with one more fact, `used`, that the goal requires; use() says which operators
-// set it, so that a plan of it is a plan of the task with one of those steps.
+// The task with one more fact, `used`, that the goal requires; least_cost_using() says which
+// operators set it, so that a plan of it is a plan of the task with one of those steps.
 class FlaggedTask {
 public:
     explicit FlaggedTask(const ground::GroundTask &task) : task_(task), used_(task.num_facts()) {
@@ -157,7 +166,7 @@ public:
     std::optional<double> least_cost_using(const std::set<int> &steps, const Deadline &deadline) {
         for (int o : steps)
             task_.operators[o].add.push_back(used_); // the largest id: the list stays sorted
-        auto cost = least_cost(task_, deadline);
+        auto cost = least_cost(task_, deadline, FLOOR_SEARCH_SECONDS);
         for (int o : steps)
             task_.operators[o].add.pop_back();
         return cost;
