@@ -250,6 +250,10 @@ DesignChange Redesigner::describe(const Redesign &redesign, const Distribution &
     else if (!current_)
         c.explanation = "design " + names(c.after_names) + " (objective " +
                         number(c.objective_after) + ") for " + to_string(c.d_after);
+    else if (c.changed && std::isnan(c.objective_before)) // some of its tasks were inherited
+        c.explanation = "design " + names(c.before_names) + " -> " + names(c.after_names) +
+                        ": under the new D the new design (" + number(c.objective_after) +
+                        ") ranks before it; " + why;
     else if (c.changed)
         c.explanation = "design " + names(c.before_names) + " -> " + names(c.after_names) +
                         ": under the new D it costs " + number(c.objective_before) +
