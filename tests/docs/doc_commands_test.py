@@ -60,6 +60,13 @@ ELSEWHERE = [
     ("cmake --build build -j2 --target envdesign envdesign-coordinator",
      "builds the soak's binaries (docs/results/soak.md)"),
     ("sudo ", "installs system files (systemd, sysctl): deploy/LAN.md, by hand"),
+    ("envdesign-bridge --problem warehouse=/tmp/warehouse-floor",
+     "FloorLive.ArrivalsOfFloorTasksChangeTheDesign (the bridge on an imported floor)"),
+    ("envdesign-arrivals --replay trips.csv --floor",
+     "FloorLive.ArrivalsOfFloorTasksChangeTheDesign (trips of an imported floor)"),
+    ("envdesign floor import rmf_demos_maps/", "needs a checkout of open-rmf/rmf_demos, never "
+                                              "committed: tests/benchmarks/floors/rmf_demos.sh"),
+    ("envdesign report /tmp/triple_H/", "follows the rmf_demos import above: not CI"),
 ]
 # Commands the docs show failing on purpose, with the exit code they give.
 EXIT = {
