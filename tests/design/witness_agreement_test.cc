@@ -1252,6 +1252,21 @@ TEST(WitnessAgreement, CostOptimalBehavioursAgreeWithExhaustive) {
     EXPECT_GE(differs_from_explicable, seeds / 5);
 }
 
+// Whether the witness search and its best-first search alone both agree with every subset;
+// a failure names the seed, the spec and the differences.
+bool agree_all_three(unsigned seed, const fs::path &spec, const Answer &witness,
+                     const Answer &best_first, const Answer &exhaustive) {
+    std::string diff = disagreement(witness, exhaustive);
+    if (std::string alone = disagreement(best_first, exhaustive); !alone.empty())
+        diff += " (best-first alone:" + alone + ")";
+    if (diff.empty())
+        return true;
+    ADD_FAILURE() << "seed " << seed << ", spec " << spec.string() << ":" << diff
+                  << "\n  witness:    " << describe(witness)
+                  << "\n  exhaustive: " << describe(exhaustive);
+    return false;
+}
+
 // Problems whose modifications all restrict, up to 9 of them: the witness search proves
 // its answer with the hitting-set phase (hitting_set.h), which must agree with every subset.
 TEST(WitnessAgreement, HittingSetPhaseAgreesWithExhaustive) {
@@ -1276,14 +1291,8 @@ TEST(WitnessAgreement, HittingSetPhaseAgreesWithExhaustive) {
         non_empty_proofs += witness.hitting_set_proof && !witness.design.empty();
         improved += exhaustive.objective < exhaustive.baseline &&
                     !same_value(exhaustive.objective, exhaustive.baseline);
-        std::string diff = disagreement(witness, exhaustive);
-        if (std::string alone = disagreement(best_first, exhaustive); !alone.empty())
-            diff += " (best-first alone:" + alone + ")";
-        if (!diff.empty()) {
+        if (!agree_all_three(seed, spec, witness, best_first, exhaustive)) {
             ++disagreements;
-            ADD_FAILURE() << "seed " << seed << ", spec " << spec.string() << ":" << diff
-                          << "\n  witness:    " << describe(witness)
-                          << "\n  exhaustive: " << describe(exhaustive);
             continue;
         }
         fs::remove_all(dir);
@@ -1334,14 +1343,8 @@ TEST(WitnessAgreement, MixedModificationsAgreeWithExhaustive) {
                          std::any_of(witness.design.begin(), witness.design.end(), [&](int m) {
                              return !index.of(m).restricting && index.of(m).adding;
                          });
-        std::string diff = disagreement(witness, exhaustive);
-        if (std::string alone = disagreement(best_first, exhaustive); !alone.empty())
-            diff += " (best-first alone:" + alone + ")";
-        if (!diff.empty()) {
+        if (!agree_all_three(seed, spec, witness, best_first, exhaustive)) {
             ++disagreements;
-            ADD_FAILURE() << "seed " << seed << ", spec " << spec.string() << ":" << diff
-                          << "\n  witness:    " << describe(witness)
-                          << "\n  exhaustive: " << describe(exhaustive);
             continue;
         }
         if (!std::getenv("ENVDESIGN_AGREEMENT_KEEP"))
