@@ -19,7 +19,9 @@ Debian ships no LCM Python module, so this speaks LCM's UDP multicast protocol i
 and fragmented messages, stdlib sockets) and uses the classes lcm-gen writes for our types
 (pure Python: build/python/envdesign, or $ENVDESIGN_PYTHON_TYPES). Like the C++ client it
 inlines the PDDL files the spec names, re-sends the request while the coordinator is silent,
-cancels it when its own timeout passes, and exits with SPEC.md's codes. With a key file
+says it still waits every 2 s (the coordinator drops a request whose client went silent),
+cancels it when its own timeout passes, and exits with SPEC.md's codes (3: no design has a
+finite objective, with the reason). With a key file
 (--key-file or $ENVDESIGN_KEY_FILE) it signs what it sends and takes only what the key signed
 (envdesign_auth.py); results and progress count only from the coordinator that took the request.
 """
@@ -47,7 +49,7 @@ for candidate in (os.environ.get("ENVDESIGN_PYTHON_TYPES", ""), HERE,  # HERE: i
         break
 try:
     from envdesign import (cancel_t, design_progress_t, design_request_t,  # noqa: E402
-                           design_result_t, spec_file_t, spec_t)
+                           design_result_t, keepalive_t, spec_file_t, spec_t)
 except ImportError:
     MISSING_TYPES = ("envdesign-client: the LCM message types (Python package 'envdesign') are "
                      "missing: install with clients/python/install.sh, or build the "
@@ -57,6 +59,7 @@ except ImportError:
     raise ImportError(MISSING_TYPES) from None
 
 DEFAULT_URL = "udpm://239.255.76.67:7667?ttl=0"
+KEEPALIVE_S = 2.0  # "still waiting", as common/bus/channels.h's CLIENT_KEEPALIVE_S
 SHORT_MAGIC, FRAGMENT_MAGIC = 0x4C433032, 0x4C433033
 SHORT_MAX = 1400      # LCM sends bigger messages as fragments
 FRAGMENT_BYTES = 60000
@@ -335,6 +338,8 @@ def task_json(t):
 def result_json(r):
     """SPEC.md's JSON of a design_result_t (the keys the C++ client writes)."""
     out = {"status": r.status}
+    if r.status == "unsolvable":  # why no design has a finite objective
+        out["reason"] = r.error
     explaining = any(t.has_explanation for t in r.tasks)
     if r.has_design:
         out["design"] = list(r.design)
@@ -403,8 +408,16 @@ def design_message(spec_path, url=None, time_limit_s=-1, max_design_size=-1, pru
         bus.close()
 
 
+def _keep_alive(bus, request):
+    """Tells the coordinator we still wait: it drops requests whose client went silent."""
+    keepalive = keepalive_t()
+    keepalive.utime, keepalive.request_id = int(time.time() * 1e6), request.request_id
+    keepalive.sender = request.sender
+    bus.publish("ENVDESIGN_KEEPALIVE", keepalive.encode())
+
+
 def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_up_after_s):
-    start = sent = heard = time.monotonic()
+    start = sent = heard = kept_alive = time.monotonic()
     bus.publish("ENVDESIGN_REQUEST", request.encode())
     cancelled = False
     taken_by = [None]  # the coordinator that took the request
@@ -434,7 +447,10 @@ def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_
         if now - sent > resend_after_s and now - heard > resend_after_s:
             taken_by[0] = None  # it went silent: whoever takes the request now
             bus.publish("ENVDESIGN_REQUEST", request.encode())
-            sent = now
+            sent = kept_alive = now
+        if not cancelled and now - kept_alive >= KEEPALIVE_S:
+            _keep_alive(bus, request)
+            kept_alive = now
 
 
 def _from_taker(m, request, taken_by):

@@ -222,6 +222,8 @@ def _ranking_block(r):
 def result_text(r):
     """What `envdesign design SPEC` prints for design_result_t `r`, newline-terminated."""
     lines = [f"status: {r.status}"]
+    if r.status == "unsolvable" and r.error:  # why no design has a finite objective
+        lines[0] += f" ({r.error})"
     if not r.has_design:
         return "\n".join(lines + ["no configuration was evaluated in time"]) + "\n"
     lines.append(f"design: {design_set(r.design)}")

@@ -7,6 +7,7 @@
 #include "cluster/design_change.h"
 #include "cluster/wire.h"
 #include "envdesign/design_request_t.hpp"
+#include "envdesign/keepalive_t.hpp"
 #include "pddl/parse_error.h"
 
 #include <algorithm>
@@ -185,7 +186,7 @@ void CoordinatorRedesigns::start(std::int64_t request_id, const arrivals::Reques
         // a late answer to that one must not replace the design for this newer D.
         std::erase_if(pending_,
                       [&](const auto &p) { return p.second.problem_id == request.problem_id; });
-        pending_[request_id] = {request.problem_id, m, now_s_};
+        pending_[request_id] = {request.problem_id, m, now_s_, now_s_};
     }
     bus_.publish(bus::REQUEST, m);
 }
@@ -199,15 +200,27 @@ void CoordinatorRedesigns::on_progress(const envdesign::design_progress_t &progr
 
 void CoordinatorRedesigns::tick(double now_s) {
     std::vector<envdesign::design_request_t> again;
+    std::vector<std::int64_t> waiting; // kept alive (a repeat says it too)
     {
         std::lock_guard lock(mutex_);
         now_s_ = now_s;
-        for (auto &[id, pending] : pending_)
+        for (auto &[id, pending] : pending_) {
             if (now_s - pending.heard_at >= options_.resend_after_s) {
-                pending.heard_at = now_s;
+                pending.heard_at = pending.kept_alive_at = now_s;
                 pending.request.utime = bus::now_utime();
                 again.push_back(pending.request);
+            } else if (now_s - pending.kept_alive_at >= bus::CLIENT_KEEPALIVE_S) {
+                pending.kept_alive_at = now_s;
+                waiting.push_back(id);
             }
+        }
+    }
+    for (std::int64_t id : waiting) {
+        envdesign::keepalive_t keepalive{};
+        keepalive.utime = bus::now_utime();
+        keepalive.request_id = id;
+        keepalive.sender = instance_;
+        bus_.publish(bus::KEEPALIVE, keepalive);
     }
     for (const auto &request : again) {
         bus_.publish(bus::REQUEST, request);

@@ -5,7 +5,9 @@
 //     D is a re-weighting; it publishes the design_result_t on ENVDESIGN_RESULT itself.
 //   - CoordinatorRedesigns (--redesign coordinator): sends the spec with the new D (and the
 //     new tasks) to envdesign-coordinator as a design request on ENVDESIGN_REQUEST and takes
-//     the coordinator's ENVDESIGN_RESULT as the answer. A request for a problem supersedes
+//     the coordinator's ENVDESIGN_RESULT as the answer, saying it still waits every 2 s
+//     (ENVDESIGN_KEEPALIVE; a superseded request is no longer kept alive, so the
+//     coordinator drops it). A request for a problem supersedes
 //     the one still pending for it (the bridge gave up on that one): a late answer to the
 //     older request is ignored, never taken as the design in force.
 // Either way the bridge hears back through `Answered` (from any thread).
@@ -123,6 +125,7 @@ private:
         std::string problem_id;
         envdesign::design_request_t request; // as sent: its spec has the new tasks
         double heard_at = 0;                 // sent, or the coordinator said something of it
+        double kept_alive_at = 0;            // sent, or a keepalive_t said we still wait
     };
 
     bus::Bus &bus_;

@@ -1,6 +1,6 @@
 #pragma once
 // The LCM channels of envdesign (SPEC.md "LCM"), each with its one message type. Clients
-// speak to the coordinator on the first four; the next six are between the coordinator and
+// speak to the coordinator on the first five; the next six are between the coordinator and
 // its planners; then the bridge's two; every service sends its status on the last
 // (services/README.md draws the message flow; docs/messages.md lists the fields).
 
@@ -9,6 +9,10 @@ namespace envdesign::bus {
 // client -> coordinator
 inline constexpr const char *REQUEST = "ENVDESIGN_REQUEST"; // design_request_t
 inline constexpr const char *CANCEL = "ENVDESIGN_CANCEL";   // cancel_t
+// "still waiting", every CLIENT_KEEPALIVE_S while a client waits for a result: a request
+// not heard of for the coordinator's --client-timeout is dropped (its client is gone)
+inline constexpr const char *KEEPALIVE = "ENVDESIGN_KEEPALIVE"; // keepalive_t
+inline constexpr double CLIENT_KEEPALIVE_S = 2.0;
 // coordinator -> clients
 inline constexpr const char *PROGRESS = "ENVDESIGN_PROGRESS"; // design_progress_t
 inline constexpr const char *RESULT = "ENVDESIGN_RESULT";     // design_result_t
@@ -32,7 +36,7 @@ inline constexpr const char *STATUS = "ENVDESIGN_STATUS"; // service_status_t
 
 // Every channel above, for tools and tests.
 inline constexpr const char *ALL_CHANNELS[] = {
-    REQUEST,    CANCEL,    PROGRESS,          RESULT,     SPEC,  JOB, WITHDRAW, SPEC_NEED,
-    EVALUATION, HEARTBEAT, TASK_DISTRIBUTION, REEVALUATE, STATUS};
+    REQUEST,   CANCEL,     KEEPALIVE, PROGRESS,          RESULT,     SPEC,  JOB, WITHDRAW,
+    SPEC_NEED, EVALUATION, HEARTBEAT, TASK_DISTRIBUTION, REEVALUATE, STATUS};
 
 } // namespace envdesign::bus

@@ -92,6 +92,8 @@ Coordinator::Coordinator(bus::Bus &bus, CoordinatorConfig config)
         bus::REQUEST, [this](const design_request_t &r) { on_request(r); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::cancel_t>(
         bus::CANCEL, [this](const envdesign::cancel_t &c) { on_cancel(c); }));
+    subscriptions_.push_back(bus_.subscribe<envdesign::keepalive_t>(
+        bus::KEEPALIVE, [this](const envdesign::keepalive_t &k) { on_keepalive(k); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::spec_need_t>(
         bus::SPEC_NEED, [this](const envdesign::spec_need_t &n) { on_spec_need(n); }));
     subscriptions_.push_back(bus_.subscribe<envdesign::evaluation_t>(
@@ -124,6 +126,8 @@ void Coordinator::on_request(const design_request_t &request) {
         return;
     }
     if (auto it = open_.find(name); it != open_.end()) {
+        if (it->second.client_origin == bus_.message_sender())
+            it->second.heard = Clock::now(); // its client still asks
         std::lock_guard lock(stats_mutex_);
         ++stats_.repeats;
         // "Still at it"; while discovering it says nothing yet (answer()).
@@ -169,6 +173,7 @@ void Coordinator::on_request(const design_request_t &request) {
                        bus_.message_sender()};
     open_[name].run = std::make_unique<RequestRun>(context, request);
     open_[name].client_origin = bus_.message_sender();
+    open_[name].heard = Clock::now();
     waiting_.push_back(name);
     {
         std::lock_guard lock(stats_mutex_);
@@ -208,6 +213,46 @@ void Coordinator::on_cancel(const envdesign::cancel_t &cancel) {
     it->second.run->cancel();
 }
 
+void Coordinator::on_keepalive(const envdesign::keepalive_t &keepalive) {
+    auto it = open_.find(bus::request_name(keepalive.sender, keepalive.request_id));
+    if (it == open_.end())
+        return; // finished, dropped, or another coordinator's
+    if (it->second.client_origin != bus_.message_sender()) {
+        // As a cancel: only the process that sent the request keeps it alive.
+        bus_.reject(bus::KEEPALIVE, "request " + it->first + ": a keepalive from another process");
+        return;
+    }
+    it->second.heard = Clock::now();
+}
+
+// Requests whose client went silent serve no one: a searching one is cancelled (its result
+// goes out and is kept as any other), a waiting one is forgotten.
+void Coordinator::drop_silent(Clock::time_point now) {
+    auto silent = now - std::chrono::duration_cast<Clock::duration>(
+                            std::chrono::duration<double>(config_.client_timeout_s));
+    for (auto it = open_.begin(); it != open_.end();) {
+        Open &open = it->second;
+        if (open.dropped || open.heard >= silent) {
+            ++it;
+            continue;
+        }
+        bus_.log().warn("request {} | dropped: nothing heard from its client in {:g} s", it->first,
+                        config_.client_timeout_s);
+        {
+            std::lock_guard lock(stats_mutex_);
+            ++stats_.dropped;
+        }
+        if (open.started) {
+            open.dropped = true;
+            open.run->cancel(); // its jobs are withdrawn from the planners (job_router.h)
+            ++it;
+            continue;
+        }
+        waiting_.erase(std::find(waiting_.begin(), waiting_.end(), it->first));
+        it = open_.erase(it);
+    }
+}
+
 void Coordinator::on_spec_need(const envdesign::spec_need_t &need) {
     if (need.coordinator != config_.instance)
         return;
@@ -233,6 +278,7 @@ int Coordinator::tick() {
         return wait_ms; // the loop calls after every message; housekeeping needs less
     last_tick_ = now;
     elect(now);
+    drop_silent(now);
     router_.tick();
     status_.tick([this](envdesign::service_status_t &s) { fill_status(s); });
     report_bad_records();

@@ -8,7 +8,9 @@
 // of them and at most max_per_client open per client: beyond that a request is answered at
 // once with a "busy" error (exit code 1) and not kept, so that the client may send it again
 // later. Progress keep-alives go only to searching requests (a waiting one hears progress
-// when its client repeats it).
+// when its client repeats it). A request its client stopped asking for (no keepalive_t nor
+// repeat from the sending process for client_timeout_s: the client was killed) is dropped:
+// a searching one is cancelled and its planner jobs withdrawn, a waiting one forgotten.
 //
 //   bus::Bus bus(url, logger);
 //   Coordinator coordinator(bus, config);
@@ -32,6 +34,7 @@
 #include "cluster/spec_chunks.h"
 #include "cluster/spec_library.h"
 #include "envdesign/cancel_t.hpp"
+#include "envdesign/keepalive_t.hpp"
 #include "envdesign/spec_need_t.hpp"
 
 #include <deque>
@@ -58,6 +61,9 @@ struct CoordinatorConfig {
     // Every request ends within this (its own limit when smaller): a request without a time
     // limit cannot hold a search slot and planners for ever.
     double max_time_limit_s = 3600;
+    // A request whose client said nothing of it (keepalive or repeat) this long is dropped.
+    // Clients say so every bus::CLIENT_KEEPALIVE_S, so this allows a few lost messages.
+    double client_timeout_s = 10;
     // Task evaluations and bounds kept across requests (evaluation_stores.h), each a plan
     // of a few hundred bytes; 0: none kept.
     std::size_t stored_evaluations = 200'000;
@@ -79,6 +85,7 @@ struct CoordinatorStats {
     long long repeats = 0;  // repeats of a known request
     long long results = 0;  // results published (repeats included)
     long long busy = 0;     // requests refused as busy
+    long long dropped = 0;  // requests dropped: their client stopped asking
     int open = 0;           // searching or waiting
 };
 
@@ -102,6 +109,8 @@ private:
         Clock::time_point last_progress{};
         envdesign::design_progress_t last_sent{};
         std::uint64_t client_origin = 0; // the bus sender of the request (0: no keys)
+        Clock::time_point heard;         // the client's last keepalive or repeat
+        bool dropped = false;            // cancelled for its client's silence
     };
     struct Closed {
         envdesign::design_result_t result;
@@ -111,6 +120,8 @@ private:
     void on_request(const envdesign::design_request_t &request);
     std::optional<std::string> busy(const std::string &client) const;
     void on_cancel(const envdesign::cancel_t &cancel);
+    void on_keepalive(const envdesign::keepalive_t &keepalive);
+    void drop_silent(Clock::time_point now);
     void on_spec_need(const envdesign::spec_need_t &need);
     void start_waiting();
     void close_finished();

@@ -66,6 +66,12 @@ void JobRouter::close(std::uint64_t owner) {
         inboxes_.erase(owner);
     }
     pool_.forget_owner(owner);
+    publish({}); // the withdrawals of its jobs still held
+}
+
+void JobRouter::forget(const std::vector<std::int64_t> &job_ids) {
+    pool_.forget(job_ids);
+    publish({});
 }
 
 std::int64_t JobRouter::send(std::uint64_t owner, envdesign::job_t job) {
@@ -123,7 +129,8 @@ void JobRouter::tick() {
 
 void JobRouter::publish(const std::vector<envdesign::job_t> &jobs) {
     for (const auto &job : pool_.take_withdrawals()) {
-        bus_.log().info("request {} | job {} withdrawn from {} for a request that had no planner",
+        bus_.log().info("request {} | job {} withdrawn from {} (its slot goes to a request "
+                        "that had none, or its request stopped waiting)",
                         job.request_id, job.job_id, job.planner);
         bus_.publish(bus::WITHDRAW, job);
     }

@@ -52,7 +52,8 @@ public:
     void close(std::uint64_t owner);
     // Sends `job` (request_id, spec and content filled) for `owner`; returns its job_id.
     std::int64_t send(std::uint64_t owner, envdesign::job_t job);
-    void forget(const std::vector<std::int64_t> &job_ids) { pool_.forget(job_ids); }
+    // Stops waiting for these jobs; planners holding them are told to stop (WITHDRAW).
+    void forget(const std::vector<std::int64_t> &job_ids);
 
     // Bus thread.
     void on_evaluation(const envdesign::evaluation_t &answer);

@@ -187,6 +187,12 @@ void PlannerPool::forget(const std::vector<std::int64_t> &job_ids) {
         auto it = jobs_.find(id);
         if (it == jobs_.end())
             continue;
+        // A held job is withdrawn: its planner would work on for no one (a never-ending
+        // search of a dropped request); the slot frees when the planner lets go of it.
+        if (auto holder = planners_.find(it->second.planner); holder != planners_.end()) {
+            holder->second.withdrawn.insert(id);
+            withdrawals_.push_back(it->second.message);
+        }
         release(it->second);
         jobs_.erase(it);
         queue_.erase(std::remove(queue_.begin(), queue_.end(), id), queue_.end());

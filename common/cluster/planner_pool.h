@@ -101,7 +101,8 @@ public:
     std::vector<envdesign::job_t> take_withdrawals();
     // Planners silent too long are gone; returns the resends.
     std::vector<envdesign::job_t> expire(Clock::time_point now, Events *events = nullptr);
-    // Forgets jobs (their request ended or stopped waiting for them).
+    // Forgets jobs (their request ended or stopped waiting for them); those held by a
+    // planner are withdrawn (take_withdrawals()) and keep their slot until it lets go.
     void forget(const std::vector<std::int64_t> &job_ids);
     // Forgets everything about `owner`'s jobs.
     void forget_owner(std::uint64_t owner);

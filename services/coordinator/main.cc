@@ -76,6 +76,11 @@ int main(int argc, char **argv) {
                    "request without a limit gets this one)")
         ->check(service::number_in({1, design::TIME_LIMIT_S.high}))
         ->capture_default_str();
+    app.add_option("--client-timeout", config.client_timeout_s,
+                   "seconds without a keepalive or repeat from a request's client after which "
+                   "the request is dropped (clients send one every 2 s)")
+        ->check(service::number_in({3, design::TIME_LIMIT_S.high}))
+        ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))
         return *code;
     config.state_max_bytes = state_max_mb << 20;

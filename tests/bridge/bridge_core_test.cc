@@ -14,6 +14,7 @@
 #include "design/local_evaluator.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
+#include "envdesign/keepalive_t.hpp"
 #include "envdesign/task_distribution_t.hpp"
 #include "spec/design_spec.h"
 
@@ -359,6 +360,9 @@ public:
                   if (deliver(m))
                       bridge_bus_.publish(bus::RESULT, m);
               })),
+          keepalives_(bridge_bus_.subscribe<envdesign::keepalive_t>(
+              bus::KEEPALIVE,
+              [this](const envdesign::keepalive_t &k) { kept_alive.push_back(k.request_id); })),
           coordinator_(coordinator_on(cluster_bus_)), planner_(planner_on(cluster_bus_)),
           bridge(bridge_bus_, c, queue_, clock) {}
 
@@ -388,13 +392,14 @@ public:
     };
     std::vector<envdesign::design_result_t> answers; // every result the coordinator sent
     int requests_sent = 0;                           // by the bridge, repeats included
+    std::vector<std::int64_t> kept_alive;            // request ids of the bridge's keepalives
     ManualClock clock{START_UTIME};
 
 private:
     bus::Bus bridge_bus_{"memq://", bus::quiet()}, cluster_bus_{"memq://", bus::quiet()};
     arrivals::ArrivalQueue queue_;
     std::int64_t sequence_ = 0;
-    bus::Subscription requests_, results_;
+    bus::Subscription requests_, results_, keepalives_;
     std::unique_ptr<cluster::Coordinator> coordinator_;
     std::unique_ptr<cluster::Planner> planner_;
 
@@ -483,6 +488,20 @@ TEST(BridgeCore, ARequestTheCoordinatorIsSilentAboutIsSentAgain) {
     EXPECT_EQ(link.answers[1].counters.planner_runs, link.answers[0].counters.planner_runs);
     EXPECT_EQ(link.bridge.design("restaurant").design, exhaustive(0.9).design);
     EXPECT_EQ(link.bridge.stats().requests, 1); // one request, sent twice
+}
+
+// While it waits for a result the bridge says so every 2 s on its clock (the coordinator
+// drops a request whose client went silent), for the request it waits for.
+TEST(BridgeCore, APendingRequestIsKeptAliveOnTheClock) {
+    LossyLink link(lossy_config(1e6)); // no repeats: only keepalives say it still waits
+    link.deliver = [](const auto &) { return false; };
+    ASSERT_TRUE(link.run_until([&] { return link.answers.size() == 1; })); // held
+    link.run_until([&] { return false; }, 50);
+    EXPECT_TRUE(link.kept_alive.empty()) << "before 2 s";
+    link.clock.advance(2.1);
+    ASSERT_TRUE(link.run_until([&] { return !link.kept_alive.empty(); }));
+    EXPECT_EQ(link.kept_alive[0], link.answers[0].request_id);
+    EXPECT_EQ(link.requests_sent, 1);
 }
 
 } // namespace

@@ -127,7 +127,9 @@ TEST(PlannerPool, SlotsPerWorkerPipelineJobs) {
     EXPECT_TRUE(pool.submit(1, job(3), now).empty());
 }
 
-TEST(PlannerPool, ForgottenJobsFreeTheirSlots) {
+// A forgotten job its planner holds is withdrawn (a dropped request's never-ending search
+// would go on for no one); its slot frees when the planner no longer lists it.
+TEST(PlannerPool, ForgottenJobsAreWithdrawnAndFreeTheirSlots) {
     PlannerPool pool({1.0, 0.3, 1});
     auto now = Clock::now();
     pool.heartbeat(beat("a", 1), now);
@@ -136,7 +138,13 @@ TEST(PlannerPool, ForgottenJobsFreeTheirSlots) {
     EXPECT_EQ(pool.jobs_in_flight(3), 2);
     pool.forget_owner(3);
     EXPECT_EQ(pool.jobs_in_flight(3), 0);
-    EXPECT_EQ(pool.submit(4, job(9), now).size(), 1u);
+    auto withdrawn = pool.take_withdrawals();
+    ASSERT_EQ(withdrawn.size(), 1u) << "job 2 was only queued";
+    EXPECT_EQ(withdrawn[0].job_id, 1);
+    EXPECT_TRUE(pool.submit(4, job(9), now).empty()) << "the planner still runs job 1";
+    auto sent = pool.heartbeat(beat("a", 1), now); // job 1 no longer listed
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0].job_id, 9);
 }
 
 TEST(PlannerPool, AnAnswerCountsOnlyFromAPlannerTheJobWasSentTo) {

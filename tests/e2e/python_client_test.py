@@ -127,7 +127,8 @@ class SameTextAsTheCli(unittest.TestCase):
              ["examples/restaurant/d-cost-optimal-t10.textproto"],
              ["examples/blocksworld/design.textproto"],
              ["examples/blocksworld/design.textproto", "--max-design-size", "1",
-              "--search", "exhaustive"]]
+              "--search", "exhaustive"],
+             ["tests/data/usability/unsolvable-tasks.textproto"]]  # exit 3, with the reason
 
     @classmethod
     def setUpClass(cls):
@@ -171,20 +172,22 @@ class SameTextAsTheCli(unittest.TestCase):
             time.sleep(0.1)
         self.fail(f"envdesign watch printed no result for {client}")
 
-    def run_python(self, args):
-        """(output, envdesign watch's text of the same result) of envdesign-client `args`."""
+    def run_python(self, args, code=0):
+        """(output, envdesign watch's text of the same result) of envdesign-client `args`,
+        which exits with `code`."""
         client = subprocess.Popen([sys.executable,
                                    os.path.join(ROOT, "clients", "python", "envdesign_client.py"),
                                    *args, "--connect", self.url], cwd=ROOT,
                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         out, err = client.communicate(timeout=120)
-        self.assertEqual(client.returncode, 0, err)
+        self.assertEqual(client.returncode, code, err)
         return out, self.watched_result(f"python-client/{socket.gethostname()}/{client.pid}")
 
     def test_every_example_prints_what_the_cli_prints(self):
         for args in self.CASES:
             with self.subTest(args=" ".join(args)):
-                out, cli_text = self.run_python(args)
+                code = 3 if "unsolvable" in args[0] else 0
+                out, cli_text = self.run_python(args, code)
                 self.assertEqual(out, cli_text)
 
     def test_the_text_carries_the_answer(self):
@@ -209,6 +212,82 @@ class SameTextAsTheCli(unittest.TestCase):
                              timeout=120)
         self.assertEqual(cli.returncode, 0, cli.stderr)
         self.assertEqual(cli.stdout.splitlines()[:3], lines[:3])
+
+
+SWITCHES_DOMAIN = """(define (domain switches) (:requirements :strips)
+  (:predicates (off ?s) (on ?s))
+  (:action flip :parameters (?s) :precondition (off ?s) :effect (and (on ?s) (not (off ?s)))))
+"""
+
+
+def write_switches_spec(folder):
+    """A spec whose blind search never ends (30 switches: tests/e2e/never_ending_spec.h)."""
+    os.makedirs(folder, exist_ok=True)
+    names = [f"s{i}" for i in range(30)]
+    with open(os.path.join(folder, "domain.pddl"), "w") as f:
+        f.write(SWITCHES_DOMAIN)
+    with open(os.path.join(folder, "all-on.pddl"), "w") as f:
+        f.write(f"(define (problem all-on) (:domain switches) (:objects {' '.join(names)}) "
+                f"(:init {' '.join(f'(off {n})' for n in names)}) "
+                f"(:goal (and {' '.join(f'(on {n})' for n in names)})))\n")
+    with open(os.path.join(folder, "design.textproto"), "w") as f:
+        f.write('robot_domain: "domain.pddl"\ntask { name: "all-on" problem: "all-on.pddl" }\n'
+                'modification { name: "first-on" cost: 1 edit { model: HUMAN add_init: '
+                '"(on s0)" } }\n')
+    return os.path.join(folder, "design.textproto")
+
+
+class PythonClientKeepsItsRequest(unittest.TestCase):
+    """The Python client says every 2 s that it still waits: a coordinator with
+    --client-timeout 3 keeps its 6 s search, and drops it once the client is killed."""
+    url = URL.replace(URL.split(":")[-1].split("?")[0], str(22001 + (os.getpid() % 10000) * 2))
+
+    def setUp(self):
+        self.work = tempfile.mkdtemp()
+        self.spec = write_switches_spec(os.path.join(self.work, "switches"))
+        self.log = os.path.join(self.work, "coordinator.log")
+        bin_dir = os.path.join(BUILD, "bin")
+        with open(self.log, "w") as log, open(os.devnull, "w") as quiet:
+            self.services = [
+                subprocess.Popen([os.path.join(bin_dir, "envdesign-coordinator"), "--lcm-url",
+                                  self.url, "--name", "coordinator", "--client-timeout", "3"],
+                                 stdout=log, stderr=log),
+                subprocess.Popen([os.path.join(bin_dir, "envdesign-planner"), "--lcm-url",
+                                  self.url, "--name", "planner-0"], stdout=quiet, stderr=quiet)]
+        time.sleep(2)  # the coordinator is past its discovery and knows the planner
+
+    def tearDown(self):
+        for service in self.services:
+            service.terminate()
+            service.wait()
+        shutil.rmtree(self.work, ignore_errors=True)
+
+    def coordinator_log(self):
+        with open(self.log) as f:
+            return f.read()
+
+    def test_a_live_client_is_kept_past_the_timeout(self):
+        start = time.monotonic()
+        _, code = envdesign_client.design_message(self.spec, self.url, time_limit_s=6,
+                                                  heuristic="blind", give_up_after_s=30)
+        self.assertEqual(code, 4)
+        self.assertGreater(time.monotonic() - start, 5.5)
+        self.assertNotIn("dropped", self.coordinator_log())
+
+    def test_a_killed_client_is_dropped(self):
+        client = subprocess.Popen([sys.executable,
+                                   os.path.join(ROOT, "clients", "python", "envdesign_client.py"),
+                                   self.spec, "--connect", self.url, "--heuristic", "blind",
+                                   "--time-limit", "0"], stdout=subprocess.DEVNULL,
+                                  stderr=subprocess.DEVNULL)
+        time.sleep(5)
+        self.assertNotIn("dropped", self.coordinator_log())
+        client.kill()
+        client.wait()
+        end = time.monotonic() + 6
+        while "dropped: nothing heard" not in self.coordinator_log() and time.monotonic() < end:
+            time.sleep(0.1)
+        self.assertIn("dropped: nothing heard from its client", self.coordinator_log())
 
 
 class PythonClientWithKey(unittest.TestCase):

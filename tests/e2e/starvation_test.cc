@@ -5,11 +5,13 @@
 // and nothing of it kept.
 
 #include "local_cluster.h"
+#include "never_ending_spec.h"
 
 #include "bus/codec.h"
 #include "bus/log.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
+#include "envdesign/keepalive_t.hpp"
 #include "spec/spec_bundle.h"
 
 #include <envdesign/client/client.h>
@@ -22,34 +24,6 @@ namespace envdesign::e2e {
 namespace {
 
 namespace fs = std::filesystem;
-
-// 30 switches to turn on: LM-cut sees the 30 steps at once, blind search visits every state
-// below 30 (about 10^9): it ends only at a limit.
-std::string write_switches_spec(const fs::path &dir) {
-    fs::create_directories(dir);
-    std::ofstream(dir / "domain.pddl") << R"((define (domain switches)
-  (:requirements :strips)
-  (:predicates (off ?s) (on ?s))
-  (:action flip :parameters (?s) :precondition (off ?s) :effect (and (on ?s) (not (off ?s)))))
-)";
-    std::ofstream problem(dir / "all-on.pddl");
-    problem << "(define (problem all-on) (:domain switches) (:objects";
-    for (int i = 0; i < 30; ++i)
-        problem << " s" << i;
-    problem << ") (:init";
-    for (int i = 0; i < 30; ++i)
-        problem << " (off s" << i << ")";
-    problem << ") (:goal (and";
-    for (int i = 0; i < 30; ++i)
-        problem << " (on s" << i << ")";
-    problem << ")))\n";
-    std::ofstream(dir / "design.textproto")
-        << "robot_domain: \"domain.pddl\"\n"
-           "task { name: \"all-on\" problem: \"all-on.pddl\" }\n"
-           "modification { name: \"first-on\" cost: 1 edit { model: HUMAN add_init: \"(on s0)\" "
-           "} }\n";
-    return (dir / "design.textproto").string();
-}
 
 class Starvation : public ::testing::Test {
 protected:
@@ -182,9 +156,17 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     std::atomic<bool> done{false};
     long most = 0;
     std::thread sampler([&] {
-        while (!done) {
+        for (int tick = 0; !done; ++tick) {
             for (Process *p : planners)
                 most = std::max(most, resident_kib(p->pid()));
+            if (tick % 20 == 0) // a live client: it says it still waits (else it is dropped)
+                for (int i = 0; i < 40; ++i) {
+                    envdesign::keepalive_t keepalive{};
+                    keepalive.utime = bus::now_utime();
+                    keepalive.request_id = 1;
+                    keepalive.sender = "flood-" + std::to_string(i);
+                    flood.publish(bus::KEEPALIVE, keepalive);
+                }
             std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }
     });

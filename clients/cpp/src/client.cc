@@ -10,6 +10,7 @@
 #include "envdesign/design_progress_t.hpp"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
+#include "envdesign/keepalive_t.hpp"
 #include "pddl/parse_error.h"
 #include "result_format.h"
 #include "spec/spec_bundle.h"
@@ -112,6 +113,8 @@ public:
                 coordinator_.reset(); // it went silent: whoever takes the request now
                 send();               // the request or the coordinator's answers were lost
             }
+            if (since(kept_alive_) >= bus::CLIENT_KEEPALIVE_S)
+                keep_alive();
         }
         return finish(*result_);
     }
@@ -147,7 +150,16 @@ private:
     void send() {
         request_.utime = bus::now_utime();
         bus_.publish(bus::REQUEST, request_);
-        sent_ = Clock::now();
+        sent_ = kept_alive_ = Clock::now(); // a repeat says it too
+    }
+    // "Still waiting": a request its client stops asking for is dropped (a killed client).
+    void keep_alive() {
+        envdesign::keepalive_t keepalive{};
+        keepalive.utime = bus::now_utime();
+        keepalive.request_id = request_.request_id;
+        keepalive.sender = request_.sender;
+        bus_.publish(bus::KEEPALIVE, keepalive);
+        kept_alive_ = Clock::now();
     }
     // Our timeout passed or we were stopped: ask the coordinator to stop and take what it has.
     Result cancel(const std::string &why) {
@@ -182,6 +194,7 @@ private:
     const Options &options_;
     Clock::time_point sent_ = Clock::now();
     Clock::time_point heard_ = Clock::now();
+    Clock::time_point kept_alive_ = Clock::now();
     std::optional<envdesign::design_result_t> result_;
     std::optional<std::string> coordinator_;
     bool answered_ = false;  // a coordinator took the request

@@ -16,7 +16,8 @@
 //
 // The client reads the spec and the PDDL files it names and sends them inlined in one
 // request; it re-sends the request when the coordinator stays silent (a lost datagram),
-// and cancels it when its own timeout passes. Exit codes are SPEC.md's.
+// says it still waits every 2 s (ENVDESIGN_KEEPALIVE: the coordinator drops requests whose
+// client went silent) and cancels it when its own timeout passes. Exit codes are SPEC.md's.
 
 #include <functional>
 #include <string>
