@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -31,19 +32,21 @@ using Model = std::unique_ptr<Cbc_Model, ModelDeleter>;
 } // namespace
 
 // The integer program being written: columns (binary unless said) and rows, with every
-// number checked against what the solver takes.
+// number checked against what the solver takes. It is kept here and given to CBC whole by
+// load(): CBC's addRow copies its whole matrix at each row, quadratic in a program of
+// thousands of rows.
 class HittingSetMaster::Program {
 public:
-    Program() : model_(Cbc_newModel()) {}
-    Cbc_Model *model() const { return model_.get(); }
     bool in_range() const { return in_range_; }
     void check(double v) { in_range_ = in_range_ && solver_number(v); }
 
     int column(double objective, double upper = 1.0, bool binary = true) {
         check(objective);
         check(upper);
-        Cbc_addCol(model(), "", 0.0, upper, objective, binary ? 1 : 0, 0, nullptr, nullptr);
-        return columns_++;
+        objective_.push_back(objective);
+        upper_.push_back(upper);
+        binary_.push_back(binary);
+        return static_cast<int>(objective_.size()) - 1;
     }
     // sum of coefs[i] * column cols[i]  (sense: 'L' <=, 'G' >=)  rhs
     void row(const std::vector<int> &cols, const std::vector<double> &coefs, char sense,
@@ -51,13 +54,51 @@ public:
         for (double c : coefs)
             check(c);
         check(rhs);
-        Cbc_addRow(model(), "", static_cast<int>(cols.size()), cols.data(), coefs.data(), sense,
-                   rhs);
+        int r = static_cast<int>(row_lower_.size());
+        for (std::size_t i = 0; i < cols.size(); ++i)
+            entries_.push_back({cols[i], r, coefs[i]});
+        row_lower_.push_back(sense == 'L' ? -COIN_INFINITY : rhs);
+        row_upper_.push_back(sense == 'G' ? COIN_INFINITY : rhs);
+    }
+
+    // The model with every column and row, in compressed columns as CBC loads them.
+    Cbc_Model *load() {
+        int n = static_cast<int>(objective_.size());
+        std::stable_sort(entries_.begin(), entries_.end(),
+                         [](const Entry &a, const Entry &b) { return a.col < b.col; });
+        std::vector<CoinBigIndex> start(n + 1, 0);
+        std::vector<int> index;
+        std::vector<double> value;
+        index.reserve(entries_.size());
+        value.reserve(entries_.size());
+        for (const Entry &e : entries_) {
+            ++start[e.col + 1];
+            index.push_back(e.row);
+            value.push_back(e.coef);
+        }
+        for (int j = 0; j < n; ++j)
+            start[j + 1] += start[j];
+        std::vector<double> lower(n, 0.0);
+        Cbc_loadProblem(model_.get(), n, static_cast<int>(row_lower_.size()), start.data(),
+                        index.data(), value.data(), lower.data(), upper_.data(), objective_.data(),
+                        row_lower_.data(), row_upper_.data());
+        for (int j = 0; j < n; ++j)
+            if (binary_[j])
+                Cbc_setInteger(model_.get(), j);
+        return model_.get();
     }
 
 private:
-    Model model_;
-    int columns_ = 0;
+    static constexpr double COIN_INFINITY = std::numeric_limits<double>::max();
+    struct Entry {
+        int col;
+        int row;
+        double coef;
+    };
+    Model model_{Cbc_newModel()};
+    std::vector<double> objective_, upper_, row_lower_, row_upper_;
+    std::vector<bool> binary_;
+    std::vector<Entry> entries_;
     bool in_range_ = true;
 };
 
@@ -284,16 +325,6 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
         return answer;
     }
     Program program;
-    Cbc_Model *m = program.model();
-    Cbc_setLogLevel(m, 0);
-    // Tight tolerances: CBC's defaults accept an incumbent 1e-5 (absolute) above the optimum,
-    // as wide as the margin on small objectives.
-    Cbc_setParameter(m, "integerTolerance", "1e-9");
-    Cbc_setParameter(m, "increment", "1e-10");
-    Cbc_setAllowableGap(m, 0.0);
-    Cbc_setAllowableFractionGap(m, 0.0);
-    if (deadline.limited())
-        Cbc_setMaximumSeconds(m, deadline.remaining_seconds());
     for (int i = 0; i < n; ++i)
         program.column(w.beta * problem_.modifications[i].cost);
     // A term above this makes a design worse than `cutoff` whatever the rest: capping the
@@ -316,6 +347,16 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
         answer.out_of_range = true;
         return answer; // FAILED
     }
+    Cbc_Model *m = program.load();
+    Cbc_setLogLevel(m, 0);
+    // Tight tolerances: CBC's defaults accept an incumbent 1e-5 (absolute) above the optimum,
+    // as wide as the margin on small objectives.
+    Cbc_setParameter(m, "integerTolerance", "1e-9");
+    Cbc_setParameter(m, "increment", "1e-10");
+    Cbc_setAllowableGap(m, 0.0);
+    Cbc_setAllowableFractionGap(m, 0.0);
+    if (deadline.limited())
+        Cbc_setMaximumSeconds(m, deadline.remaining_seconds());
     if (std::isfinite(cutoff)) // INF: a ranking not full yet, every design is wanted
         Cbc_setCutoff(m, cutoff - offset + margin(cutoff));
     Cbc_solve(m);

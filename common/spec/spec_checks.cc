@@ -4,6 +4,8 @@
 #include "design/configuration.h"
 #include "ground/grounder.h"
 
+#include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 
@@ -77,22 +79,66 @@ KindText kind_text(const proto::Edit &e) {
 
 std::string model_name(bool robot) { return robot ? "robot" : "human"; }
 
+bool problem_edit(EditKind kind) {
+    return kind == EditKind::ADD_INIT || kind == EditKind::REMOVE_INIT ||
+           kind == EditKind::ADD_GOAL || kind == EditKind::REMOVE_GOAL;
+}
+
+bool init_edit(EditKind kind) {
+    return kind == EditKind::ADD_INIT || kind == EditKind::REMOVE_INIT;
+}
+
+// Each task's models as the spec gives them, copied once: a modification that edits only
+// initial states and goals is tried on them in place and undone, since copying every task's
+// models for every modification took most of a large floor's loading (294 x 182 copies).
+class PristineModels {
+public:
+    explicit PristineModels(const DesignProblem &problem) : problem_(problem) {}
+
+    ModelPair &task(std::size_t t) {
+        if (models_.empty())
+            for (std::size_t i = 0; i < problem_.tasks.size(); ++i)
+                models_.push_back(base_models(problem_, static_cast<int>(i)));
+        return models_[t];
+    }
+    // After an in-place trial: the lists are back to their sizes, or the task is copied anew.
+    void restore(std::size_t t, const std::array<std::size_t, 4> &sizes) {
+        if (list_sizes(models_[t]) != sizes)
+            models_[t] = base_models(problem_, static_cast<int>(t));
+    }
+    static std::array<std::size_t, 4> list_sizes(const ModelPair &m) {
+        return {m.robot_problem.init.size(), m.robot_problem.goal.size(),
+                m.human_problem.init.size(), m.human_problem.goal.size()};
+    }
+
+private:
+    const DesignProblem &problem_;
+    std::vector<ModelPair> models_;
+};
+
 // Missing removes are tallied per (edit, model) over the tasks; other errors stop at once.
 class ModificationChecker {
 public:
-    ModificationChecker(const DesignProblem &problem, const Modification &modification)
-        : problem_(problem), modification_(modification) {}
+    ModificationChecker(const DesignProblem &problem, const Modification &modification,
+                        PristineModels &pristine)
+        : problem_(problem), modification_(modification), pristine_(pristine) {}
 
     void check() {
+        bool in_place = std::all_of(modification_.edits.begin(), modification_.edits.end(),
+                                    [](const Edit &e) { return problem_edit(e.kind); });
         for (std::size_t t = 0; t < problem_.tasks.size(); ++t) {
-            ModelPair models = base_models(problem_, static_cast<int>(t));
-            for (std::size_t e = 0; e < modification_.edits.size(); ++e) {
-                const Edit &edit = modification_.edits[e];
-                if (applies_to_robot(edit.model))
-                    apply(edit, e, true, models.robot_domain, models.robot_problem, t);
-                if (applies_to_human(edit.model))
-                    apply(edit, e, false, models.human_domain, models.human_problem, t);
+            if (!in_place) {
+                ModelPair models = base_models(problem_, static_cast<int>(t));
+                apply_all(models, t, nullptr);
+                continue;
             }
+            ModelPair &models = pristine_.task(t);
+            auto sizes = PristineModels::list_sizes(models);
+            std::vector<Undo> undo;
+            apply_all(models, t, &undo);
+            for (auto it = undo.rbegin(); it != undo.rend(); ++it)
+                it->run(models);
+            pristine_.restore(t, sizes);
         }
         for (const auto &[key, missing] : missing_)
             if (missing.count == problem_.tasks.size())
@@ -104,6 +150,47 @@ private:
         std::size_t count = 0;
         std::optional<NotPresentError> first;
     };
+    // What one applied edit changed, to take it back: an added atom or goal is the last of
+    // its list; a removed one is added again (the order of a list means nothing).
+    struct Undo {
+        const Edit *edit;
+        bool robot;
+        std::size_t size_before;
+
+        void run(ModelPair &m) const {
+            pddl::Problem &problem = robot ? m.robot_problem : m.human_problem;
+            bool init = init_edit(edit->kind);
+            std::size_t size = init ? problem.init.size() : problem.goal.size();
+            if (size > size_before) {
+                if (init)
+                    problem.init.pop_back();
+                else
+                    problem.goal.pop_back();
+            } else if (size < size_before) {
+                Edit again = *edit;
+                again.kind = init ? EditKind::ADD_INIT : EditKind::ADD_GOAL;
+                apply_edit(again, robot ? m.robot_domain : m.human_domain, &problem,
+                           ApplyMode::LENIENT);
+            }
+        }
+    };
+
+    void apply_all(ModelPair &models, std::size_t t, std::vector<Undo> *undo) {
+        for (std::size_t e = 0; e < modification_.edits.size(); ++e) {
+            const Edit &edit = modification_.edits[e];
+            for (bool robot : {true, false}) {
+                if (robot ? !applies_to_robot(edit.model) : !applies_to_human(edit.model))
+                    continue;
+                pddl::Problem &problem = robot ? models.robot_problem : models.human_problem;
+                if (undo)
+                    undo->push_back(
+                        {&edit, robot,
+                         init_edit(edit.kind) ? problem.init.size() : problem.goal.size()});
+                apply(edit, e, robot, robot ? models.robot_domain : models.human_domain, problem,
+                      t);
+            }
+        }
+    }
 
     void apply(const Edit &edit, std::size_t index, bool robot, pddl::Domain &domain,
                pddl::Problem &problem, std::size_t task) {
@@ -124,6 +211,7 @@ private:
 
     const DesignProblem &problem_;
     const Modification &modification_;
+    PristineModels &pristine_;
     std::map<std::pair<std::size_t, bool>, Missing> missing_;
 };
 
@@ -181,8 +269,9 @@ void check_design_problem(const DesignProblem &problem, const SpecFile &spec) {
                                  ": note: while compiling task '" + problem.tasks[t].name + "'");
         }
     }
+    PristineModels pristine(problem);
     for (const auto &m : problem.modifications)
-        ModificationChecker(problem, m).check();
+        ModificationChecker(problem, m, pristine).check();
     check_predicate_declarations(problem);
 }
 
