@@ -9,14 +9,35 @@
 #include "pddl/parse_error.h"
 
 #include <algorithm>
+#include <fstream>
+#include <unistd.h>
 
 namespace envdesign::cluster {
+namespace {
+
+// The process's resident memory (/proc/self/statm); 0 where it cannot be read.
+std::size_t resident_bytes() {
+    std::ifstream statm("/proc/self/statm");
+    std::size_t pages = 0, resident = 0;
+    if (!(statm >> pages >> resident))
+        return 0;
+    return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+}
+
+} // namespace
+
+std::size_t job_search_budget(std::size_t job_memory_bytes, std::size_t resident, int workers) {
+    std::size_t taken =
+        resident / static_cast<std::size_t>(std::max(1, workers)) + JOB_MEMORY_MARGIN;
+    // Never 0 (that is "no limit"): a budget the process leaves no room for stops at once.
+    return job_memory_bytes > taken ? job_memory_bytes - taken : 1;
+}
 
 // One worker's evaluators, one per (spec, heuristic), each with its own plan cache.
 class WorkerCaches {
 public:
-    WorkerCaches(int max_specs, std::size_t memory_bytes)
-        : max_(max_specs), memory_bytes_(memory_bytes) {}
+    WorkerCaches(int max_specs, std::size_t memory_bytes, int workers)
+        : max_(max_specs), memory_bytes_(memory_bytes), workers_(workers) {}
 
     design::LocalEvaluator &get(const std::shared_ptr<const LoadedSpec> &spec,
                                 std::int8_t heuristic) {
@@ -27,7 +48,10 @@ public:
                 entries_.clear(); // rare: more specs in use than kept; start over
             planning::PlannerOptions options;
             options.heuristic = heuristic_kind(heuristic);
-            options.limits.memory_limit_bytes = memory_bytes_;
+            // The search's share of the limit is what the process leaves of it now (code,
+            // specs, caches; other workers' searches): the planner's size holds the limit.
+            options.limits.memory_limit_bytes =
+                job_search_budget(memory_bytes_, resident_bytes(), workers_);
             Entry entry{spec, std::make_unique<design::LocalEvaluator>(*spec->problem, 1, options)};
             it = entries_.emplace(key, std::move(entry)).first;
         }
@@ -41,6 +65,7 @@ private:
     };
     int max_;
     std::size_t memory_bytes_;
+    int workers_;
     std::map<std::string, Entry> entries_;
 };
 
@@ -75,12 +100,41 @@ void Planner::tick() {
     if (now - last_tick_ < std::chrono::milliseconds(5))
         return; // the loop calls after every message; housekeeping needs less
     last_tick_ = now;
-    if (std::chrono::duration<double>(now - last_beat_).count() >= config_.heartbeat_period_s)
+    if (std::chrono::duration<double>(now - last_beat_.load()).count() >=
+        config_.heartbeat_period_s)
         heartbeat(stopping_);
     status_.tick([this](envdesign::service_status_t &s) { fill_status(s); });
+    guard_memory();
     drop_stale_parked(now);
     ask_for_specs(now);
     specs_.expire();
+}
+
+// The backstop of the job budgets (job_search_budget): the process's resident memory, read
+// every tick, stops the running searches before it passes workers x job_memory_bytes.
+void Planner::guard_memory() {
+    std::size_t limit =
+        config_.job_memory_bytes * static_cast<std::size_t>(std::max(1, config_.workers));
+    std::size_t resident = resident_bytes();
+    std::lock_guard lock(mutex_);
+    if (running_.empty()) {
+        idle_resident_ = resident;
+        return;
+    }
+    // A search grows in steps (a vector or hash table doubling copies at once): measured
+    // up to 40% of what it held, within one step, so its room is cut to two thirds.
+    std::size_t room =
+        limit > idle_resident_ + JOB_MEMORY_MARGIN ? limit - idle_resident_ - JOB_MEMORY_MARGIN : 0;
+    if (resident < idle_resident_ + room / 3 * 2)
+        return;
+    for (auto &[id, run] : running_)
+        if (!run.over_memory) {
+            run.over_memory = true;
+            *run.stop = true;
+            bus_.log().warn("request - | job {} stopped: the planner holds {} MiB, its limit is "
+                            "{} MiB (--job-memory-mb x --workers)",
+                            id, resident >> 20, limit >> 20);
+        }
 }
 
 void Planner::drop_stale_parked(Clock::time_point now) {
@@ -307,7 +361,7 @@ void Planner::heartbeat(bool stopping) {
 }
 
 void Planner::work() {
-    WorkerCaches caches(config_.max_specs, config_.job_memory_bytes);
+    WorkerCaches caches(config_.max_specs, config_.job_memory_bytes, config_.workers);
     while (true) {
         Pending pending;
         std::shared_ptr<std::atomic<bool>> stop;
@@ -327,9 +381,20 @@ void Planner::work() {
         }
         auto start = Clock::now();
         envdesign::evaluation_t answer = evaluate(pending, caches, stop.get());
-        if (stop->load()) { // withdrawn or stopping: not an answer, the job went elsewhere
+        bool over_memory = false;
+        {
             std::lock_guard lock(mutex_);
-            abandon(pending.job);
+            over_memory = running_.at(pending.job.job_id).over_memory;
+        }
+        if (stop->load() && !over_memory) { // withdrawn or stopping: the job went elsewhere
+            {
+                std::lock_guard lock(mutex_);
+                abandon(pending.job);
+            }
+            // The coordinator frees the slot when a heartbeat no longer lists the job: say so
+            // now, not up to a period later (the request it yielded to waits for it).
+            if (!stopping_)
+                heartbeat(false);
             continue;
         }
         answer.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -52,10 +52,24 @@ struct PlannerConfig {
     int answers_kept = 4096;         // by job id, for re-sent jobs
     int remembered_answers = 16'384; // by content (answer_memory.h), each about a plan's size
     SpecLimits spec_limits;          // what chunks from the bus may make it hold
-    // Search data one job may hold (A*'s registry, per-state data, open list): a job that
-    // needs more is answered LIMIT, so the planner's size stays near workers x this.
+    // The planner's resident memory stays under workers x this: a job's search may hold
+    // (A*'s registry, per-state data, open list) this less its share of what the process
+    // holds when the job's evaluator is made (job_search_budget); a job that needs more is
+    // answered LIMIT.
     std::size_t job_memory_bytes = std::size_t{1} << 30;
 };
+
+// Room kept for what the search's byte count misses: the heuristic's own data, a plan being
+// built, the allocator's slack.
+inline constexpr std::size_t JOB_MEMORY_MARGIN = std::size_t{8} << 20;
+
+// Room kept for what a search's byte count misses. The planner also stops its running jobs
+// (answered LIMIT) once its resident memory passes its idle size plus two thirds of the rest
+// of workers x job_memory_bytes less this (Planner::guard_memory): a search's last growth
+// step then still fits.
+// The search data one job may hold: `job_memory_bytes` less the process's `resident` bytes
+// shared over `workers`, less JOB_MEMORY_MARGIN; at least 1 byte (0 would be "no limit").
+std::size_t job_search_budget(std::size_t job_memory_bytes, std::size_t resident, int workers);
 
 struct PlannerStats {
     long long jobs_done = 0;
@@ -88,6 +102,7 @@ private:
     void ask_for_specs(Clock::time_point now);
     void drop_stale_parked(Clock::time_point now);
     void heartbeat(bool stopping);
+    void guard_memory();
     void fill_status(envdesign::service_status_t &status) const;
     void work();
     envdesign::evaluation_t evaluate(const Pending &pending, class WorkerCaches &caches,
@@ -122,10 +137,12 @@ private:
     struct Running {
         Clock::time_point start;
         std::shared_ptr<std::atomic<bool>> stop; // withdrawn or stopping: the search ends
+        bool over_memory = false;                // stopped at the memory limit: answered LIMIT
     };
-    std::map<std::int64_t, Running> running_; // by job id, under mutex_
-    std::set<std::int64_t> withdrawn_;        // queued jobs taken back, under mutex_
-    Clock::time_point last_beat_{};
+    std::map<std::int64_t, Running> running_;    // by job id, under mutex_
+    std::size_t idle_resident_ = 0;              // the process with no job running, under mutex_
+    std::set<std::int64_t> withdrawn_;           // queued jobs taken back, under mutex_
+    std::atomic<Clock::time_point> last_beat_{}; // workers beat too (a withdrawn job let go)
     Clock::time_point last_tick_{};
     bus::StatusPublisher status_;
     std::vector<std::thread> workers_;

@@ -71,6 +71,12 @@ std::optional<JobRecord> PlannerPool::answer(std::int64_t job_id, const std::str
     // A late answer to a job queued again for another planner still counts.
     queue_.erase(std::remove(queue_.begin(), queue_.end(), job_id), queue_.end());
     JobRecord record = std::move(it->second);
+    if (auto planner = planners_.find(record.planner);
+        planner != planners_.end() && record.planner == from && contended()) {
+        planner->second.kept_for = client_of(record.owner);
+        planner->second.kept_until = now + std::chrono::duration_cast<Clock::duration>(
+                                               std::chrono::duration<double>(config_.anticipate_s));
+    }
     release(record);
     jobs_.erase(it);
     counters_.answered_by.insert(from);
@@ -269,12 +275,16 @@ std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
     bool contended = this->contended();
     while (!queue_.empty()) {
         auto next = next_fair();
-        JobRecord &record = jobs_.at(*next);
-        auto planner = pick_planner(record, contended);
+        auto planner = pick_planner(jobs_.at(*next), contended, now);
+        if (!planner && (next = kept_job(contended, now)) != queue_.end())
+            planner = pick_planner(jobs_.at(*next), contended, now);
         if (!planner)
             break;
+        JobRecord &record = jobs_.at(*next);
         queue_.erase(next);
-        ++planners_[*planner].holding;
+        Planner &to = planners_[*planner];
+        ++to.holding;
+        to.kept_until = {}; // taken: by the client it was kept for, or it expired
         record.planner = *planner;
         record.sent = now;
         record.message.planner = *planner;
@@ -293,6 +303,17 @@ std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
     if (!queue_.empty())
         withdraw_for_waiting(now, contended);
     return out;
+}
+
+// The oldest queued job of a client a free slot is kept for (anticipate_s); end() if none.
+std::deque<std::int64_t>::iterator PlannerPool::kept_job(bool contended, Clock::time_point now) {
+    std::set<std::uint64_t> kept;
+    for (const auto &[name, planner] : planners_)
+        if (planner.kept_until > now && planner.free(contended))
+            kept.insert(planner.kept_for);
+    return std::find_if(queue_.begin(), queue_.end(), [&](std::int64_t id) {
+        return kept.count(client_of(jobs_.at(id).owner)) > 0;
+    });
 }
 
 void PlannerPool::set_client(std::uint64_t owner, std::uint64_t client) {
@@ -379,7 +400,9 @@ std::vector<envdesign::job_t> PlannerPool::take_withdrawals() {
 
 // Round robin over planners with a free slot, preferring one that has not had this job;
 // demoted planners only when no other has a free slot.
-std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record, bool contended) {
+std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record, bool contended,
+                                                     Clock::time_point now) {
+    std::uint64_t client = client_of(record.owner);
     for (bool demoted : {false, true}) {
         std::optional<std::string> fallback;
         auto start = planners_.upper_bound(last_pick_);
@@ -389,6 +412,8 @@ std::optional<std::string> PlannerPool::pick_planner(const JobRecord &record, bo
             const auto &[name, planner] = *start;
             if (!planner.free(contended) || planner.demoted != demoted)
                 continue;
+            if (planner.kept_until > now && planner.kept_for != client)
+                continue; // kept a moment for its last client's next job
             if (!record.tried.count(name)) {
                 last_pick_ = name;
                 return name;

@@ -22,6 +22,8 @@
 //     job (so a planner that lists jobs and never answers soon gets none), and after demote_after
 //     missed deadlines in a row it is demoted: it gets jobs only when no other planner has
 //     a free slot, until it answers one in time;
+//   - while clients contend, an answered job's slot waits anticipate_s for its client's next
+//     job (a search sends it a moment later) before another client's job takes it;
 //   - an answer counts only from a planner the job was sent to (sent_to());
 //   - the first answer to a job wins; later ones are duplicates.
 // Thread-safe.
@@ -54,6 +56,11 @@ struct PoolConfig {
     int demote_after = 2;        // missed deadlines in a row
     double working_grace_s = 2;  // past a job's time limit, a working holder keeps it this long
     double quantum_s = 2;        // a job runs this long (x2 per withdrawal) before it may yield
+    // While clients contend, a slot whose job was answered waits this long for the same
+    // client's next job before another client's takes it: a search sends its next jobs a
+    // moment after an answer, and without the wait each of them had to withdraw a job again
+    // (a planner round trip; issue 21's flood made a 0.05 s request take 1 s).
+    double anticipate_s = 0.05;
 };
 
 struct PoolCounters {
@@ -135,6 +142,9 @@ private:
         bool working(Clock::time_point now) const;
         std::set<std::int64_t> withdrawn; // taken for another request, not yet let go of
         int workers = 1;                  // its capacity: jobs it runs at once
+        // A slot kept for this client's next job until then (anticipate_s).
+        std::uint64_t kept_for = 0;
+        Clock::time_point kept_until{};
         // A free slot; while clients contend (`contended`), jobs are not queued behind a
         // running one in the planner (a fair share would then wait there): one per worker.
         bool free(bool contended) const {
@@ -147,10 +157,12 @@ private:
     FairShare::Held held() const;
     std::uint64_t client_of(std::uint64_t owner) const;
     std::deque<std::int64_t>::iterator next_fair();
+    std::deque<std::int64_t>::iterator kept_job(bool contended, Clock::time_point now);
     void withdraw_for_waiting(Clock::time_point now, bool contended);
     void withdraw(std::int64_t job_id, Clock::time_point now);
     bool overdue(const JobRecord &record, Clock::time_point now) const;
-    std::optional<std::string> pick_planner(const JobRecord &record, bool contended);
+    std::optional<std::string> pick_planner(const JobRecord &record, bool contended,
+                                            Clock::time_point now);
     bool contended() const; // jobs of more than one client are queued or held
     void requeue(std::int64_t job_id);
     void release(JobRecord &record);

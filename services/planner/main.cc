@@ -32,8 +32,9 @@ int main(int argc, char **argv) {
         ->capture_default_str();
     std::size_t job_memory_mb = config.job_memory_bytes >> 20;
     app.add_option("--job-memory-mb", job_memory_mb,
-                   "search memory one job may use, in MiB (beyond it the job is answered as "
-                   "out of limits); the planner stays near --workers x this")
+                   "the planner's resident memory stays under --workers x this, in MiB: a "
+                   "job's search gets this less its share of the process (beyond it the job "
+                   "is answered as out of limits)")
         ->check(CLI::Range(16, 1 << 20))
         ->capture_default_str();
     if (auto code = services::parse_command_line(app, argc, argv))

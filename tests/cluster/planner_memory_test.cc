@@ -85,5 +85,15 @@ TEST_F(PlannerMemoryTest, TheSameContentIsComputedOnceForAnyCoordinator) {
     EXPECT_EQ(planner_->stats().answers_remembered, 2);
 }
 
+// A job's search may hold the limit less its worker's share of the process and the margin;
+// a limit the process leaves no room for is 1 byte (the search stops at once), never 0
+// ("no limit").
+TEST(JobSearchBudget, TheLimitLessTheProcessShareAndTheMargin) {
+    constexpr std::size_t MIB = std::size_t{1} << 20;
+    EXPECT_EQ(job_search_budget(128 * MIB, 20 * MIB, 1), 128 * MIB - 20 * MIB - JOB_MEMORY_MARGIN);
+    EXPECT_EQ(job_search_budget(128 * MIB, 20 * MIB, 2), 128 * MIB - 10 * MIB - JOB_MEMORY_MARGIN);
+    EXPECT_EQ(job_search_budget(16 * MIB, 20 * MIB, 1), 1u);
+}
+
 } // namespace
 } // namespace envdesign::cluster::testing

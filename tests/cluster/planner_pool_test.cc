@@ -262,8 +262,31 @@ TEST(PlannerPool, ARequestHoldingNoSlotGetsOneByAWithdrawal) {
     EXPECT_EQ(sent[0].job_id, 2) << "the request that had none goes first";
     std::vector<envdesign::job_t> next;
     ASSERT_TRUE(pool.answer(2, "a", next, now + 3300ms));
+    EXPECT_TRUE(next.empty()) << "the slot waits anticipate_s for request 2's next job";
+    next = pool.expire(now + 3300ms + 40ms);
+    EXPECT_TRUE(next.empty());
+    next = pool.expire(now + 3300ms + 60ms);
     ASSERT_EQ(next.size(), 1u);
     EXPECT_EQ(next[0].job_id, 1) << "then the withdrawn job again";
+    EXPECT_TRUE(pool.take_withdrawals().empty());
+}
+
+// While clients contend, a search's next job (sent a moment after its last answer) finds
+// the slot its answer freed, without withdrawing another client's job again.
+TEST(PlannerPool, AnAnsweredSlotWaitsForItsClientsNextJob) {
+    PoolConfig config{10.0, 0.3, 1};
+    config.job_deadline_s = 100;
+    PlannerPool pool(config);
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    ASSERT_EQ(pool.submit(1, job(1), now).size(), 1u);
+    EXPECT_TRUE(pool.submit(2, job(2), now).empty());
+    std::vector<envdesign::job_t> next;
+    ASSERT_TRUE(pool.answer(1, "a", next, now + 10ms));
+    EXPECT_TRUE(next.empty()) << "kept for request 1";
+    auto sent = pool.submit(1, job(3), now + 20ms);
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0].job_id, 3);
     EXPECT_TRUE(pool.take_withdrawals().empty());
 }
 
