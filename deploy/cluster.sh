@@ -5,7 +5,11 @@
 # A local envdesign cluster on this machine: one envdesign-coordinator and N envdesign-planner
 # processes (default 2) on LCM's loopback default (udpm://239.255.76.67:7667?ttl=0; ttl=0
 # keeps every datagram on this host). Logs and pid files go to DIR (default
-# /tmp/envdesign-cluster). `start` returns once every process is up; `stop` sends SIGTERM
+# /tmp/envdesign-cluster), as coordinator.log and planner-N.log. Each process keeps its own
+# default name on the bus, ROLE/HOST/PID (coordinator/vm/4242): two clusters started on one
+# bus with other --dir have no name in common, so `envdesign status` shows every process and
+# a job reaches the one planner it is addressed to (docs/services.md, "Names and two clusters
+# on one bus"). `start` returns once every process is up; `stop` sends SIGTERM
 # (planners first, so the coordinator hears them go), waits up to 10 s, then SIGKILLs.
 # Both are idempotent. Binaries: $ENVDESIGN_BIN, else build/bin beside this script.
 # --key-file (or $ENVDESIGN_KEY_FILE, which the services read themselves): bus keys.
@@ -38,15 +42,19 @@ done
 
 alive() { [ -f "$1" ] && kill -0 "$(cat "$1")" 2>/dev/null; }
 
-# start_one NAME ARGS...: starts a service unless its pid file names a live process.
+# bus_name FILE ROLE: the process's name on the bus (the services' default, ROLE/HOST/PID).
+bus_name() { echo "$2/$HOSTNAME/$(cat "$1")"; }
+
+# start_one FILE ARGS...: starts a service, logging to FILE.log, unless FILE.pid names a live
+# process. No --name: the service's default is unique on the bus.
 start_one() {
-    local name=$1; shift
-    if alive "$dir/$name.pid"; then
-        echo "cluster.sh: $name already running (pid $(cat "$dir/$name.pid"))"
+    local file=$1; shift
+    if alive "$dir/$file.pid"; then
+        echo "cluster.sh: $file already running (pid $(cat "$dir/$file.pid"))"
         return
     fi
-    "$@" --lcm-url "$url" --name "$name" ${key_flags[@]+"${key_flags[@]}"} >"$dir/$name.log" 2>&1 &
-    echo $! >"$dir/$name.pid"
+    "$@" --lcm-url "$url" ${key_flags[@]+"${key_flags[@]}"} >"$dir/$file.log" 2>&1 &
+    echo $! >"$dir/$file.pid"
 }
 
 # The service logs "on URL" once its bus is open; a process that died says why in its log.
@@ -91,7 +99,7 @@ case $action in
         done
         wait_up coordinator
         for i in $(seq 1 "$planners"); do wait_up "planner-$i"; done
-        echo "cluster.sh: coordinator and $planners planner(s) on $url (logs in $dir)"
+        echo "cluster.sh: $(bus_name "$dir/coordinator.pid" coordinator) and $planners planner(s) on $url (logs in $dir)"
         ;;
     stop)
         stop_all
@@ -100,7 +108,11 @@ case $action in
         for f in "$dir"/*.pid; do
             [ -f "$f" ] || continue
             n=$(basename "$f" .pid)
-            if alive "$f"; then echo "$n: running (pid $(cat "$f"))"; else echo "$n: dead"; fi
+            if alive "$f"; then
+                echo "$n: running as $(bus_name "$f" "${n%%-*}") (pid $(cat "$f"))"
+            else
+                echo "$n: dead"
+            fi
         done
         ;;
     *)
