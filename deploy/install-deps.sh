@@ -20,6 +20,7 @@ BUILD_PACKAGES=(
     libsqlite3-dev  # the coordinator's durable evaluations (common/store)
     libsystemd-dev  # sd_notify: Type=notify units with a watchdog (common/service/systemd_notify.h)
     libyaml-cpp-dev  # envdesign floor import reads Open-RMF building maps (common/floor)
+    libgoogle-perftools-dev  # tcmalloc for the design CLI (CMakeLists.txt)
 )
 TEST_PACKAGES=(
     liblcm-java openjdk-17-jdk xvfb xauth libjchart2d-java iproute2  # lcm-spy on our types

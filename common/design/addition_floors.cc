@@ -5,6 +5,7 @@
 #include "ground/grounder.h"
 #include "ground/stop.h"
 #include "planning/planner.h"
+#include "search/state_space.h"
 
 #include <algorithm>
 #include <chrono>
@@ -129,6 +130,10 @@ std::optional<std::set<int>> users(const Modification &modification, const Opera
 // floor), so that one hard task does not keep the phase from every other.
 constexpr double FLOOR_SEARCH_SECONDS = 1.0;
 
+// A task of A with at most this many states is explored whole once (search/state_space.h)
+// for every L(t, e) at once; a larger one gets a search per modification.
+constexpr std::size_t EXPLORED_STATES = 100000;
+
 // `cap_s` > 0: a floor search, one of thousands (a task per lane), mostly small: h^max costs
 // a fraction of LM-cut per state. The one search per task over every plan of A keeps LM-cut.
 planning::PlannerOptions options_for(const Deadline &deadline, double cap_s = 0) {
@@ -248,6 +253,8 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
     if (*least > floor)
         return true;
     std::vector<double> prefix = cheapest_prefix(task);
+    std::optional<std::vector<double>> through; // per operator, from one exploration
+    bool explored = false;
     std::optional<FlaggedTask> flagged;
     for (int e : adding) {
         auto steps = users(problem.modifications[e], *index, naming);
@@ -260,10 +267,23 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
                 cheapest = std::min(cheapest, prefix[o]);
             if (cheapest > floor)
                 continue;
-            if (!flagged)
-                flagged.emplace(task);
-            auto found = flagged->least_cost_using(*steps, deadline);
-            ++searches;
+            if (!explored) {
+                explored = true;
+                through = search::least_cost_through_operators(task, EXPLORED_STATES,
+                                                               [&] { return deadline.expired(); });
+                ++searches;
+            }
+            std::optional<double> found;
+            if (through) {
+                found = INF;
+                for (int o : *steps)
+                    found = std::min(*found, (*through)[o]);
+            } else {
+                if (!flagged)
+                    flagged.emplace(task);
+                found = flagged->least_cost_using(*steps, deadline);
+                ++searches;
+            }
             if (!found && deadline.expired()) {
                 why = "a time limit stopped the floors of adding modifications";
                 return false;
