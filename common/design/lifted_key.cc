@@ -19,10 +19,28 @@ void write(std::ostream &out, const std::vector<pddl::TypedName> &names) {
     out << ']';
 }
 
+// As Atom::to_string and Literal::to_string write them, without a string of each.
+void write(std::ostream &out, const pddl::Atom &a) {
+    out << '(' << a.predicate;
+    for (const auto &arg : a.args)
+        out << ' ' << arg;
+    out << ')';
+}
+
+void write(std::ostream &out, const pddl::Literal &l) {
+    if (l.negated)
+        out << "(not ";
+    write(out, l.atom);
+    if (l.negated)
+        out << ')';
+}
+
 void write(std::ostream &out, const std::vector<pddl::Literal> &literals) {
     out << '[';
-    for (const auto &l : literals)
-        out << l.to_string() << ';';
+    for (const auto &l : literals) {
+        write(out, l);
+        out << ';';
+    }
     out << ']';
 }
 
@@ -64,10 +82,14 @@ void write_domain(std::ostream &out, const pddl::Domain &d) {
 void write_problem(std::ostream &out, const pddl::Problem &p) {
     out << "\n";
     write(out, p.objects);
-    for (const auto &a : p.init)
-        out << a.to_string() << ';';
-    for (const auto &[term, value] : p.function_values)
-        out << term.to_string() << '=' << value << ';';
+    for (const auto &a : p.init) {
+        write(out, a);
+        out << ';';
+    }
+    for (const auto &[term, value] : p.function_values) {
+        write(out, term);
+        out << '=' << value << ';';
+    }
     write(out, p.goal);
     out << p.minimize_total_cost;
 }

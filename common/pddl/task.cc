@@ -3,10 +3,19 @@
 namespace envdesign::pddl {
 
 std::string Atom::to_string() const {
-    std::string out = "(" + predicate;
+    std::size_t size = predicate.size() + 2;
     for (const auto &arg : args)
-        out += " " + arg;
-    return out + ")";
+        size += arg.size() + 1;
+    std::string out;
+    out.reserve(size); // one allocation: atoms are written by the million (lifted_key.h)
+    out += '(';
+    out += predicate;
+    for (const auto &arg : args) {
+        out += ' ';
+        out += arg;
+    }
+    out += ')';
+    return out;
 }
 
 std::string Literal::to_string() const {
@@ -34,4 +43,4 @@ Action *Domain::find_action(const std::string &name) {
     return nullptr;
 }
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl
