@@ -134,12 +134,10 @@ constexpr double FLOOR_SEARCH_SECONDS = 1.0;
 // for every L(t, e) at once; a larger one gets a search per modification.
 constexpr std::size_t EXPLORED_STATES = 100000;
 
-// `cap_s` > 0: a floor search, one of thousands (a task per lane), mostly small: h^max costs
-// a fraction of LM-cut per state. The one search per task over every plan of A keeps LM-cut.
+// `cap_s` > 0: a floor search of a task too large to explore whole (state_space.h), where
+// LM-cut's fewer expansions repay its cost per state.
 planning::PlannerOptions options_for(const Deadline &deadline, double cap_s = 0) {
     planning::PlannerOptions options;
-    if (cap_s > 0)
-        options.heuristic = heuristics::HeuristicKind::HMAX;
     options.limits.stop = deadline.stop_flag();
     if (deadline.limited())
         options.limits.time_limit_s = std::max(1e-3, deadline.remaining_seconds());

@@ -18,12 +18,29 @@ struct Step {
     StateID to;
 };
 
-// Least costs from `sources` along `adjacent` (per state, its steps; `next` picks the far end).
+// Per state, its steps (indices into the steps), in one array: a million states' lists
+// cost no allocation each.
+struct Adjacency {
+    std::vector<std::size_t> begin; // state s: list[begin[s] .. begin[s + 1])
+    std::vector<int> list;
+
+    Adjacency(std::size_t states, const std::vector<Step> &steps, bool outgoing)
+        : begin(states + 1, 0), list(steps.size()) {
+        for (const Step &s : steps)
+            ++begin[(outgoing ? s.from : s.to) + 1];
+        for (std::size_t i = 0; i < states; ++i)
+            begin[i + 1] += begin[i];
+        std::vector<std::size_t> next(begin.begin(), begin.end() - 1);
+        for (int i = 0; i < static_cast<int>(steps.size()); ++i)
+            list[next[outgoing ? steps[i].from : steps[i].to]++] = i;
+    }
+};
+
+// Least costs from `sources` along `adjacent` (`next` picks a step's far end).
 template <typename Next>
 std::vector<double> dijkstra(std::size_t states, const std::vector<StateID> &sources,
-                             const std::vector<std::vector<int>> &adjacent,
-                             const std::vector<Step> &steps, const ground::GroundTask &task,
-                             Next next) {
+                             const Adjacency &adjacent, const std::vector<Step> &steps,
+                             const ground::GroundTask &task, Next next) {
     std::vector<double> cost(states, INF);
     using Entry = std::pair<double, StateID>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
@@ -34,9 +51,10 @@ std::vector<double> dijkstra(std::size_t states, const std::vector<StateID> &sou
         queue.pop();
         if (c > cost[s])
             continue;
-        for (int i : adjacent[s]) {
-            StateID t = next(steps[i]);
-            double through = c + task.operators[steps[i].op].cost;
+        for (std::size_t k = adjacent.begin[s]; k < adjacent.begin[s + 1]; ++k) {
+            const Step &step = steps[adjacent.list[k]];
+            StateID t = next(step);
+            double through = c + task.operators[step.op].cost;
             if (through < cost[t])
                 cost[t] = through, queue.push({through, t});
         }
@@ -58,7 +76,7 @@ std::optional<std::vector<double>> least_cost_through_operators(const ground::Gr
     StateID init = registry.insert_facts(task.initial_state).id;
     // Registered states are numbered in order, so the next one to expand is `expanded`.
     for (StateID expanded = 0; expanded < registry.size(); ++expanded) {
-        if (registry.size() > max_states || steps.size() > 64 * max_states ||
+        if (registry.size() > max_states || steps.size() > 8 * max_states ||
             (expanded % 4096 == 0 && stop()))
             return std::nullopt;
         registry.unpack(expanded, state);
@@ -72,13 +90,10 @@ std::optional<std::vector<double>> least_cost_through_operators(const ground::Gr
             steps.push_back({expanded, op, registry.insert_successor(expanded, op).id});
     }
     std::size_t n = registry.size();
-    std::vector<std::vector<int>> out(n), in(n);
-    for (int i = 0; i < static_cast<int>(steps.size()); ++i) {
-        out[steps[i].from].push_back(i);
-        in[steps[i].to].push_back(i);
-    }
-    auto g = dijkstra(n, {init}, out, steps, task, [](const Step &s) { return s.to; });
-    auto h = dijkstra(n, goals, in, steps, task, [](const Step &s) { return s.from; });
+    auto g = dijkstra(n, {init}, Adjacency(n, steps, true), steps, task,
+                      [](const Step &s) { return s.to; });
+    auto h = dijkstra(n, goals, Adjacency(n, steps, false), steps, task,
+                      [](const Step &s) { return s.from; });
     std::vector<double> through(task.num_operators(), INF);
     for (const Step &s : steps) {
         double cost = g[s.from] + task.operators[s.op].cost + h[s.to];
