@@ -19,12 +19,14 @@
 // that. The robot's optimal cost c_R*, a floor on c_R(pi), falls the same way (the same
 // argument on the robot's model alone).
 // "Uses" is read on the ground task of A, built without pruning irrelevant operators so
-// that every plan of A is a plan of it; a step is an operator, and the search is A* on that
-// task with one more fact, set by the operators that use e and required by the goal. Before
-// searching, h^max of an operator's precondition plus its cost bounds every plan that uses
-// it from below: where that bound is above the floor for each operator of e, e cannot
-// lower it and no search is made. A search that passes a second stops, and the least cost of
-// any plan of A stands in for L(t, e): a weaker floor, never a wrong one.
+// that every plan of A is a plan of it; a step is an operator. A task of at most 100 000
+// states is explored whole once, which gives the least cost of a plan through each operator
+// (search/state_space.h); a larger one gets A* with one more fact, set by the operators that
+// use e and required by the goal. Before searching, h^max of an operator's precondition
+// plus its cost bounds every plan that uses it from below: where that bound is above the
+// floor for each operator of e, e cannot lower it and no search is made. A search that
+// passes a second stops, and the least cost of any plan of A stands in for L(t, e): a
+// weaker floor, never a wrong one.
 
 #include "design/deadline.h"
 #include "design/design_problem.h"
