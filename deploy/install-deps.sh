@@ -28,6 +28,7 @@ TEST_PACKAGES=(
     gnuplot-nox  # the interplay plot (tests/benchmarks/paper), the plots of envdesign report
     chromium  # tests/cli/report_test.py renders the report headless
     clang libclang-rt-14-dev  # tests/fuzz: libFuzzer, ASan and UBSan runtimes; the clang build
+    clang-format  # CI fails on a file .clang-format would change (tests/format/check.sh)
 )
 
 PACKAGES=("${BUILD_PACKAGES[@]}")

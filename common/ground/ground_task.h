@@ -33,24 +33,24 @@ using OperatorId = std::int32_t;
 using Cost = std::int32_t;
 
 struct GroundOperator {
-    std::string name;          // "(move a b)", lower case, for plan output only
-    std::vector<FactId> pre;   // facts that must be true
-    std::vector<FactId> add;   // facts made true
-    std::vector<FactId> del;   // facts made false
-    Cost cost = 1;             // primary cost, >= 0
-    Cost secondary_cost = 0;   // tie-breaker among plans of equal primary cost, >= 0
+    std::string name;        // "(move a b)", lower case, for plan output only
+    std::vector<FactId> pre; // facts that must be true
+    std::vector<FactId> add; // facts made true
+    std::vector<FactId> del; // facts made false
+    Cost cost = 1;           // primary cost, >= 0
+    Cost secondary_cost = 0; // tie-breaker among plans of equal primary cost, >= 0
 };
 
 struct GroundTask {
-    std::vector<std::string> fact_names;  // index = FactId
+    std::vector<std::string> fact_names; // index = FactId
     std::vector<GroundOperator> operators;
-    std::vector<FactId> initial_state;    // the facts true initially
-    std::vector<FactId> goal;             // the facts that must hold at the end
+    std::vector<FactId> initial_state; // the facts true initially
+    std::vector<FactId> goal;          // the facts that must hold at the end
     std::vector<std::vector<FactId>> mutex_groups;
-    bool has_action_costs = false;        // false: every cost is 1 ("unit cost" in plan output)
+    bool has_action_costs = false; // false: every cost is 1 ("unit cost" in plan output)
 
     int num_facts() const { return static_cast<int>(fact_names.size()); }
     int num_operators() const { return static_cast<int>(operators.size()); }
 };
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

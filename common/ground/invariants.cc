@@ -19,7 +19,7 @@ struct Part {
 
 struct Candidate {
     int num_parameters = 0;
-    std::vector<Part> parts;  // sorted, one per predicate
+    std::vector<Part> parts; // sorted, one per predicate
     auto operator<=>(const Candidate &) const = default;
 };
 
@@ -104,10 +104,11 @@ private:
             if (!key || std::binary_search(op.pre.begin(), op.pre.end(), a))
                 continue;
             if (!added.insert(*key).second)
-                return false;  // two atoms of one instance at once: no refinement helps
+                return false; // two atoms of one instance at once: no refinement helps
             bool deletes_required = false;
             for (FactId d : op.del)
-                if (std::binary_search(op.pre.begin(), op.pre.end(), d) && instance_of(c, atoms_[d]) == key)
+                if (std::binary_search(op.pre.begin(), op.pre.end(), d) &&
+                    instance_of(c, atoms_[d]) == key)
                     deletes_required = true;
             if (!deletes_required) {
                 refine(c, op, *key);
@@ -179,8 +180,9 @@ std::vector<std::vector<FactId>> choose_disjoint(std::vector<std::vector<FactId>
     while (true) {
         for (auto &g : groups)
             std::erase_if(g, [&](FactId f) { return covered[f]; });
-        auto best = std::max_element(groups.begin(), groups.end(),
-                                     [](const auto &a, const auto &b) { return a.size() < b.size(); });
+        auto best =
+            std::max_element(groups.begin(), groups.end(),
+                             [](const auto &a, const auto &b) { return a.size() < b.size(); });
         if (best == groups.end() || best->size() < 2)
             return chosen;
         for (FactId f : *best)
@@ -190,7 +192,7 @@ std::vector<std::vector<FactId>> choose_disjoint(std::vector<std::vector<FactId>
     }
 }
 
-}  // namespace
+} // namespace
 
 void add_mutex_groups(GroundTask &task, const std::vector<AtomKey> &fact_atoms) {
     auto invariants = InvariantFinder(task, fact_atoms).find();
@@ -215,4 +217,4 @@ void add_mutex_groups(GroundTask &task, const std::vector<AtomKey> &fact_atoms) 
     task.mutex_groups = choose_disjoint(std::move(groups), task.num_facts());
 }
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

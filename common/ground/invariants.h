@@ -19,4 +19,4 @@ namespace envdesign::ground {
 // whose preconditions are mutex, and makes a goal with mutex facts unreachable.
 void add_mutex_groups(GroundTask &task, const std::vector<AtomKey> &fact_atoms);
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

@@ -16,8 +16,8 @@ struct SchemaAtom {
 
 struct Schema {
     int index = 0;
-    std::vector<std::vector<bool>> allowed;  // per parameter, per object
-    std::vector<SchemaAtom> positive;        // positive preconditions, static ones included
+    std::vector<std::vector<bool>> allowed; // per parameter, per object
+    std::vector<SchemaAtom> positive;       // positive preconditions, static ones included
     std::vector<SchemaAtom> negative_static;
     std::vector<std::pair<int, int>> equal, distinct;
     std::vector<SchemaAtom> adds;
@@ -112,7 +112,8 @@ private:
         for (const auto &l : action.precondition) {
             SchemaAtom atom = compile_atom(l.atom, params);
             if (atom.predicate < 0)
-                (l.negated ? schema.distinct : schema.equal).emplace_back(atom.args[0], atom.args[1]);
+                (l.negated ? schema.distinct : schema.equal)
+                    .emplace_back(atom.args[0], atom.args[1]);
             else if (!l.negated)
                 schema.positive.push_back(std::move(atom));
             else if (!out_.is_fluent[atom.predicate])
@@ -194,7 +195,8 @@ private:
         return best;
     }
 
-    const std::vector<int> &candidates(const SchemaAtom &atom, const std::vector<int> &binding) const {
+    const std::vector<int> &candidates(const SchemaAtom &atom,
+                                       const std::vector<int> &binding) const {
         for (std::size_t pos = 0; pos < atom.args.size(); ++pos) {
             int arg = atom.args[pos];
             int object = arg < 0 ? decode_object(arg) : binding[arg];
@@ -281,14 +283,14 @@ private:
     std::unordered_map<std::string, int> object_ids_, predicate_ids_;
     std::vector<std::set<std::string>> object_types_;
     std::vector<Schema> schemas_;
-    std::vector<std::vector<std::pair<int, int>>> triggers_;  // predicate -> (schema, precondition)
+    std::vector<std::vector<std::pair<int, int>>> triggers_; // predicate -> (schema, precondition)
     std::vector<std::vector<int>> by_predicate_;
-    std::vector<std::vector<std::vector<std::vector<int>>>> by_argument_;  // pred, pos, object
+    std::vector<std::vector<std::vector<std::vector<int>>>> by_argument_; // pred, pos, object
     std::deque<int> queue_;
     std::unordered_set<AtomKey, AtomKeyHash> seen_instances_;
 };
 
-}  // namespace
+} // namespace
 
 int Reachability::object_id(const std::string &name) const {
     auto it = object_ids.find(name);
@@ -315,4 +317,4 @@ Reachability explore(const pddl::Domain &domain, const pddl::Problem &problem,
     return result;
 }
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

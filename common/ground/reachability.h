@@ -31,16 +31,16 @@ struct ActionInstance {
 };
 
 struct Reachability {
-    std::vector<std::string> objects;     // object id -> name (constants first)
-    std::vector<std::string> predicates;  // predicate id -> name
-    std::vector<bool> is_fluent;          // per predicate: some action adds or deletes it
-    std::vector<AtomKey> atoms;           // every reachable atom, init atoms first
+    std::vector<std::string> objects;    // object id -> name (constants first)
+    std::vector<std::string> predicates; // predicate id -> name
+    std::vector<bool> is_fluent;         // per predicate: some action adds or deletes it
+    std::vector<AtomKey> atoms;          // every reachable atom, init atoms first
     std::unordered_map<AtomKey, int, AtomKeyHash> atom_index;
     std::vector<ActionInstance> actions;
     std::unordered_map<std::string, int> object_ids, predicate_ids;
 
     int object_id(const std::string &name) const;
-    int predicate_id(const std::string &name) const;  // -1 if undeclared
+    int predicate_id(const std::string &name) const; // -1 if undeclared
     std::string atom_name(const AtomKey &atom) const;
     bool is_reached(const AtomKey &atom) const { return atom_index.count(atom) > 0; }
 };
@@ -49,4 +49,4 @@ struct Reachability {
 Reachability explore(const pddl::Domain &domain, const pddl::Problem &problem,
                      const StopCheck &stop = {});
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

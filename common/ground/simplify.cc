@@ -42,7 +42,7 @@ void restrict(GroundTask &task, const std::vector<bool> &keep_fact,
     std::erase_if(task.mutex_groups, [](const auto &g) { return g.size() < 2; });
 }
 
-}  // namespace
+} // namespace
 
 void remove_unreachable(GroundTask &task) {
     std::vector<bool> reached(task.num_facts(), false), applicable(task.num_operators(), false);
@@ -100,4 +100,4 @@ void remove_irrelevant(GroundTask &task) {
     restrict(task, relevant, useful);
 }
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

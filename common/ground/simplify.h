@@ -19,4 +19,4 @@ void remove_always_true(GroundTask &task);
 // their preconditions, so a plan of the smaller task is a plan of the original.
 void remove_irrelevant(GroundTask &task);
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

@@ -21,4 +21,4 @@ inline void check(const StopCheck &stop) {
         throw GroundingStopped();
 }
 
-}  // namespace envdesign::ground
+} // namespace envdesign::ground

@@ -19,14 +19,14 @@ namespace envdesign::pddl {
 // A name with its declared type: "?x - block", "a - (either truck car)".
 struct TypedName {
     std::string name;
-    std::vector<std::string> types = {"object"};  // more than one: (either ...)
+    std::vector<std::string> types = {"object"}; // more than one: (either ...)
     Location location;
 };
 
 // (p a ?x); also (= ?x ?y) with predicate "=".
 struct Atom {
     std::string predicate;
-    std::vector<std::string> args;  // "?var" or an object/constant name
+    std::vector<std::string> args; // "?var" or an object/constant name
     Location location;
 
     std::string to_string() const;
@@ -46,15 +46,15 @@ struct Literal {
 // The cost an action adds to total-cost: a number, or a static function term.
 struct CostExpression {
     int constant = 0;
-    std::optional<Atom> function;  // (travel-slow ?f1 ?f2)
+    std::optional<Atom> function; // (travel-slow ?f1 ?f2)
 };
 
 struct Action {
     std::string name;
     std::vector<TypedName> parameters;
-    std::vector<Literal> precondition;  // a conjunction
-    std::vector<Literal> effect;        // negated = delete
-    std::vector<CostExpression> costs;  // summed; empty = no cost given
+    std::vector<Literal> precondition; // a conjunction
+    std::vector<Literal> effect;       // negated = delete
+    std::vector<CostExpression> costs; // summed; empty = no cost given
     // A second cost, minimised among plans of least `costs` (the design engine's compiled
     // task: human cost first, robot cost second). Not written in PDDL; empty = 0.
     std::vector<CostExpression> secondary_costs;
@@ -71,10 +71,10 @@ struct Domain {
     std::string name;
     std::string file;
     std::set<std::string> requirements;
-    std::map<std::string, std::string> type_parent;  // every declared type -> its parent
+    std::map<std::string, std::string> type_parent; // every declared type -> its parent
     std::vector<TypedName> constants;
     std::vector<Predicate> predicates;
-    std::vector<Predicate> functions;  // numeric functions, total-cost included
+    std::vector<Predicate> functions; // numeric functions, total-cost included
     std::vector<Action> actions;
 
     const Predicate *find_predicate(const std::string &name) const;
@@ -88,9 +88,9 @@ struct Problem {
     std::string domain_name;
     std::vector<TypedName> objects;
     std::vector<Atom> init;
-    std::map<Atom, int> function_values;  // (= (travel-slow n0 n1) 6)
-    std::vector<Literal> goal;            // a conjunction
-    bool minimize_total_cost = false;     // (:metric minimize (total-cost))
+    std::map<Atom, int> function_values; // (= (travel-slow n0 n1) 6)
+    std::vector<Literal> goal;           // a conjunction
+    bool minimize_total_cost = false;    // (:metric minimize (total-cost))
 };
 
-}  // namespace envdesign::pddl
+} // namespace envdesign::pddl

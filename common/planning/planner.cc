@@ -13,7 +13,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace
+} // namespace
 
 PlanReport plan_task(const ground::GroundTask &task, const PlannerOptions &options) {
     auto start = std::chrono::steady_clock::now();
@@ -67,4 +67,4 @@ PlanReport plan_files(const std::string &domain_file, const std::string &problem
     return report;
 }
 
-}  // namespace envdesign::planning
+} // namespace envdesign::planning

@@ -18,9 +18,9 @@ struct PlannerOptions {
 
 struct PlanReport {
     search::SearchStatus status = search::SearchStatus::FAILED;
-    std::vector<std::string> plan;  // "(move a b)", in order
+    std::vector<std::string> plan; // "(move a b)", in order
     long long cost = 0;
-    long long secondary_cost = 0;  // of the plan, among plans of least `cost`
+    long long secondary_cost = 0; // of the plan, among plans of least `cost`
     bool unit_cost = true;
     search::SearchStatistics statistics;
     int facts = 0;
@@ -38,4 +38,4 @@ PlanReport plan_files(const std::string &domain_file, const std::string &problem
 // Searches an already ground task; parse and ground times are left at zero.
 PlanReport plan_task(const ground::GroundTask &task, const PlannerOptions &options);
 
-}  // namespace envdesign::planning
+} // namespace envdesign::planning

@@ -19,5 +19,5 @@ TEST(PaperProblem, DriverlogOneAtHorizonOneChoosesTheDisembarkRule) {
     EXPECT_NE(r.out.find("\"objective\":3.75"), std::string::npos) << r.out;
 }
 
-}  // namespace
-}  // namespace envdesign::testing
+} // namespace
+} // namespace envdesign::testing

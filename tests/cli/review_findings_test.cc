@@ -14,8 +14,8 @@ namespace {
 const std::string DIR = std::string(ENVDESIGN_TEST_DATA) + "/review/";
 
 TEST(ReviewFindings, EqualityInTheGoalIsEvaluated) {
-    CommandResult r = run_envdesign("plan " + DIR + "robot-domain.pddl " + DIR + "goal-equal.pddl",
-                                    false);
+    CommandResult r =
+        run_envdesign("plan " + DIR + "robot-domain.pddl " + DIR + "goal-equal.pddl", false);
     EXPECT_EQ(r.exit_code, 0);
     EXPECT_EQ(r.out, "(move a b)\n; cost = 1 (unit cost)\n");
     r = run_envdesign("plan " + DIR + "robot-domain.pddl " + DIR + "goal-not-equal.pddl", false);
@@ -45,5 +45,5 @@ TEST(ReviewFindings, DeepNestingIsBadInputNotACrash) {
     std::remove(path.c_str());
 }
 
-}  // namespace
-}  // namespace envdesign::testing
+} // namespace
+} // namespace envdesign::testing

@@ -39,8 +39,7 @@ TEST(Grounder, StopsWhenAsked) {
     pddl::Problem problem = pddl::parse_problem_file(dir + "problem.pddl", domain);
     int asked = 0;
     // Asked every few thousand steps while reachability runs: the fifth time says stop.
-    EXPECT_THROW(ground(domain, problem, nullptr, [&] { return ++asked == 5; }),
-                 GroundingStopped);
+    EXPECT_THROW(ground(domain, problem, nullptr, [&] { return ++asked == 5; }), GroundingStopped);
     EXPECT_EQ(asked, 5);
 }
 
@@ -57,12 +56,13 @@ TEST(Grounder, AStopThatNeverSaysStopChangesNothing) {
 TEST(Grounder, KeepsOnlyReachableRelevantFactsAndOperators) {
     GroundTask task = ground_tiny();
     // at x3, locked lab and its complement, visited hub; visited kitchen/lab are irrelevant.
-    EXPECT_EQ(names(task, [&] {
-                  std::vector<FactId> all(task.num_facts());
-                  for (FactId f = 0; f < task.num_facts(); ++f)
-                      all[f] = f;
-                  return all;
-              }()),
+    EXPECT_EQ(names(task,
+                    [&] {
+                        std::vector<FactId> all(task.num_facts());
+                        for (FactId f = 0; f < task.num_facts(); ++f)
+                            all[f] = f;
+                        return all;
+                    }()),
               (std::vector<std::string>{"(at r1 hub)", "(at r1 kitchen)", "(at r1 lab)",
                                         "(locked lab)", "(not (locked lab))", "(visited hub)"}));
     // six moves between three connected places (none to itself), one unlock of the lab.
@@ -99,5 +99,5 @@ TEST(Grounder, BlocksworldFourBlocksHasThirtyTwoOperators) {
     EXPECT_FALSE(task.has_action_costs);
 }
 
-}  // namespace
-}  // namespace envdesign::ground
+} // namespace
+} // namespace envdesign::ground

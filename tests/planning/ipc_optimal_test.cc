@@ -30,7 +30,7 @@ std::vector<Instance> ci_sample() {
     std::ifstream csv(IPC_DIR + "optimal-costs.csv");
     std::vector<Instance> sample;
     std::string line;
-    std::getline(csv, line);  // header
+    std::getline(csv, line); // header
     while (std::getline(csv, line)) {
         std::vector<std::string> f;
         std::stringstream fields(line);
@@ -69,5 +69,5 @@ std::string instance_name(const ::testing::TestParamInfo<Instance> &info) {
 
 INSTANTIATE_TEST_SUITE_P(Ipc, IpcOptimalTest, ::testing::ValuesIn(ci_sample()), instance_name);
 
-}  // namespace
-}  // namespace envdesign::planning
+} // namespace
+} // namespace envdesign::planning
