@@ -1,6 +1,7 @@
 // Bad samples: every kind is counted, none throws, floods are bounded.
 
 #include "arrivals/intake.h"
+#include "restaurant_drift.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +11,6 @@
 
 namespace envdesign::arrivals {
 namespace {
-
-constexpr int64_t NOW_UTIME = 1'700'000'000'000'000; // 2023-11-14, microseconds
 
 Arrival arrival(const std::string &task, int64_t sequence, const std::string &site = "s1") {
     return {"p", site, task, sequence, NOW_UTIME, "", ""};

@@ -2,6 +2,7 @@
 // evaluations (no planner runs once they are stored), new tasks added or refused.
 
 #include "arrivals/redesign.h"
+#include "restaurant_drift.h"
 
 #include "spec/design_spec.h"
 
@@ -17,10 +18,7 @@ namespace envdesign::arrivals {
 namespace {
 
 const std::string DATA = ENVDESIGN_ARRIVALS_DATA;
-const std::string SPEC = DATA + "/restaurant-drift.textproto";
 const std::string RESTAURANT = DATA + "/../../../examples/restaurant/";
-
-Distribution g1(double p) { return {{"serve-g1", p}, {"serve-g2", 1 - p}}; }
 
 std::string read(const std::string &path) {
     std::ifstream in(path);
@@ -29,21 +27,12 @@ std::string read(const std::string &path) {
     return s.str();
 }
 
-// A fresh search (new evaluator, empty caches) of the spec with D = `d`.
-design::DesignResult fresh(const Distribution &d) {
-    design::DesignProblem problem = spec::load_design_problem(SPEC);
-    for (auto &t : problem.tasks)
-        t.probability = d.at(t.name);
-    design::LocalEvaluator evaluator(problem, 1);
-    return design::search_design(problem, evaluator, {});
-}
-
 std::vector<std::string> names(const Redesigner &r, const design::DesignResult &result) {
     return design::design_names(r.problem(), result.best->ranked.configuration);
 }
 
 TEST(Redesign, FirstRunIsTheSpecsDesign) {
-    Redesigner r(spec::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(RESTAURANT_DRIFT), {});
     Redesign first = r.redesign(r.distribution(), {});
     ASSERT_TRUE(first.result.best);
     EXPECT_TRUE(first.result.optimal);
@@ -69,12 +58,12 @@ TEST(Redesign, ARestartedRedesignerFindsItsEvaluationsInTheStateFile) {
     RedesignOptions options;
     options.evaluations = open();
     {
-        Redesigner before(spec::load_design_problem(SPEC), options);
+        Redesigner before(spec::load_design_problem(RESTAURANT_DRIFT), options);
         EXPECT_GT(before.redesign(g1(0.9), {}).change.planner_runs, 0);
         EXPECT_GT(before.redesign(g1(0.1), {}).change.planner_runs, 0);
     }
     options.evaluations = open(); // the process restarted
-    Redesigner after(spec::load_design_problem(SPEC), options);
+    Redesigner after(spec::load_design_problem(RESTAURANT_DRIFT), options);
     Redesign again = after.redesign(g1(0.1), {});
     EXPECT_EQ(again.change.planner_runs, 0);
     EXPECT_EQ(names(after, again.result), names(after, fresh(g1(0.1))));
@@ -84,7 +73,7 @@ TEST(Redesign, ARestartedRedesignerFindsItsEvaluationsInTheStateFile) {
 // 0.9 -> 0.1 flips the design to barrier-00-01, as a fresh search says; the old design
 // costs more under the new D. Going back and forth again costs no planner run.
 TEST(Redesign, DriftFlipsTheDesignThenReweightingIsFree) {
-    Redesigner r(spec::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(RESTAURANT_DRIFT), {});
     r.redesign(g1(0.9), {});
     Redesign flip = r.redesign(g1(0.1), {});
     EXPECT_TRUE(flip.change.changed);
@@ -113,7 +102,7 @@ TEST(Redesign, DriftFlipsTheDesignThenReweightingIsFree) {
 
 // Re-weighting is exact: for D along the way, the design and objective of a fresh search.
 TEST(Redesign, SameAsFreshSearchesAlongTheDrift) {
-    Redesigner r(spec::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(RESTAURANT_DRIFT), {});
     for (double p : {0.9, 0.8, 0.75, 0.7, 0.5, 0.3, 0.1, 0.0, 1.0, 0.85}) {
         Redesign got = r.redesign(g1(p), {});
         design::DesignResult expected = fresh(g1(p));
@@ -128,7 +117,7 @@ TEST(Redesign, SameAsFreshSearchesAlongTheDrift) {
 // serve-g2 again under another name, so the answer is known: with D = 0.9 on it the design
 // is the one for serve-g2-heavy D.
 TEST(Redesign, NewTaskIsAddedAndEvaluated) {
-    Redesigner r(spec::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(RESTAURANT_DRIFT), {});
     r.redesign(r.distribution(), {});
     NewTask task{"serve-g2-again", read(RESTAURANT + "serve-g2.pddl"),
                  read(RESTAURANT + "serve-g2-human.pddl")};
@@ -151,7 +140,7 @@ TEST(Redesign, NewTaskIsAddedAndEvaluated) {
 
 // Bad PDDL for a new task: refused with the parser's message; the search still runs.
 TEST(Redesign, BadNewTaskIsRefused) {
-    Redesigner r(spec::load_design_problem(SPEC), {});
+    Redesigner r(spec::load_design_problem(RESTAURANT_DRIFT), {});
     r.redesign(r.distribution(), {});
     Redesign got = r.redesign(g1(0.1), {{"broken", "(define (problem x) (:domain restaurant)", ""},
                                         {"ghost",

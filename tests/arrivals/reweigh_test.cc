@@ -6,6 +6,7 @@
 
 #include "arrivals/redesign.h"
 #include "arrivals/tracker.h"
+#include "restaurant_drift.h"
 
 #include "spec/design_spec.h"
 
@@ -16,11 +17,7 @@
 namespace envdesign::arrivals {
 namespace {
 
-const std::string SPEC = std::string(ENVDESIGN_ARRIVALS_DATA) + "/restaurant-drift.textproto";
-constexpr int64_t NOW_UTIME = 1'700'000'000'000'000;
 constexpr double ARRIVAL_S = 0.01; // 100 arrivals per second
-
-Distribution g1(double p) { return {{"serve-g1", p}, {"serve-g2", 1 - p}}; }
 
 TrackerConfig bridge_config() {
     TrackerConfig c;
@@ -81,20 +78,13 @@ struct Bridge {
     Distribution estimate() const { return tracker.status("restaurant")->estimate; }
 };
 
-design::DesignResult fresh(const Distribution &d) {
-    design::DesignProblem problem = spec::load_design_problem(SPEC);
-    for (auto &t : problem.tasks)
-        t.probability = d.at(t.name);
-    design::LocalEvaluator evaluator(problem, 1);
-    return design::search_design(problem, evaluator, {});
-}
-
 // The case: the replay ends with the mix 0.165 (TV) from the D of the design in force,
 // below the drift threshold 0.2, and another design is optimal there. The store holds what
 // is needed (both sides were evaluated before), so the design in force becomes the optimal
 // one with no drift request and no planner run. The old bridge kept {} until TV 0.2.
 TEST(Reweigh, TheDesignFollowsAMixBelowTheThresholdWithoutPlanners) {
-    auto r = std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{});
+    auto r = std::make_unique<Redesigner>(spec::load_design_problem(RESTAURANT_DRIFT),
+                                          RedesignOptions{});
     r->redesign(g1(0.1), {});
     r->redesign(g1(0.9), {}); // the design in force: {}, for 0.9
     Bridge bridge(std::move(r));
@@ -122,7 +112,8 @@ TEST(Reweigh, TheDesignFollowsAMixBelowTheThresholdWithoutPlanners) {
 // asked for only when the drift detector passes its threshold, and then the design is the
 // optimal one.
 TEST(Reweigh, MissingEvaluationsWaitForTheDriftThreshold) {
-    auto r = std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{});
+    auto r = std::make_unique<Redesigner>(spec::load_design_problem(RESTAURANT_DRIFT),
+                                          RedesignOptions{});
     r->redesign(g1(0.9), {});
     Bridge bridge(std::move(r));
     // Straight to the far side: a reweigh alone cannot prove the barrier's design.
@@ -187,7 +178,8 @@ TEST(Reweigh, DueOnChangeRateLimitedNotWhilePending) {
 // Arrivals stamped 10 minutes ahead of the bridge's clock (beyond --max-future 300 s) still
 // move the estimate, from their order, and the skew counter shows them.
 TEST(Reweigh, ArrivalsFromASkewedClockStillMoveTheEstimate) {
-    Bridge bridge(std::make_unique<Redesigner>(spec::load_design_problem(SPEC), RedesignOptions{}));
+    Bridge bridge(std::make_unique<Redesigner>(spec::load_design_problem(RESTAURANT_DRIFT),
+                                               RedesignOptions{}));
     const int64_t ten_minutes = 600'000'000;
     for (int i = 0; i < 10; ++i)
         bridge.tracker.receive(

@@ -1,15 +1,14 @@
 // The bridge's state: estimates per problem, unknown and new tasks, scripted drift.
 
 #include "arrivals/tracker.h"
+#include "restaurant_drift.h"
 
 #include <gtest/gtest.h>
 
 namespace envdesign::arrivals {
 namespace {
 
-constexpr int64_t NOW_UTIME = 1'700'000'000'000'000;
-
-TrackerConfig config(const std::string &estimator = "window:10") {
+TrackerConfig tracker_config(const std::string &estimator = "window:10") {
     TrackerConfig c;
     c.estimator = parse_estimator_config(estimator);
     c.drift.threshold = 0.25;
@@ -34,7 +33,7 @@ private:
 };
 
 TEST(Tracker, EstimatesPerProblem) {
-    ArrivalTracker tracker(config());
+    ArrivalTracker tracker(tracker_config());
     tracker.add_problem("p", {{"a", 0.5}, {"b", 0.5}});
     Feeder feed(tracker);
     for (const char *t : {"a", "a", "a", "b"})
@@ -50,7 +49,7 @@ TEST(Tracker, EstimatesPerProblem) {
 // An initial request never answered is asked again on the clock (answer_timeout_s 120),
 // with no arrival; once a design is answered, the clock alone asks for nothing.
 TEST(Tracker, AnUnansweredInitialRequestIsAskedAgainOnTheClock) {
-    ArrivalTracker tracker(config());
+    ArrivalTracker tracker(tracker_config());
     tracker.add_problem("p", {{"a", 0.5}, {"b", 0.5}});
     tracker.initial_request("p", 0);
     EXPECT_TRUE(tracker.requests_due(119).empty());
@@ -65,7 +64,7 @@ TEST(Tracker, AnUnansweredInitialRequestIsAskedAgainOnTheClock) {
 }
 
 TEST(Tracker, UnknownProblemAndUnknownTask) {
-    ArrivalTracker tracker(config());
+    ArrivalTracker tracker(tracker_config());
     tracker.add_problem("p", {{"a", 1}});
     Feeder feed(tracker);
     EXPECT_EQ(feed.send("a", "nope").verdict, Verdict::UNKNOWN_PROBLEM);
@@ -87,7 +86,7 @@ TEST(Tracker, UnknownProblemAndUnknownTask) {
 // the estimate, at k = 6 and k = 9. Without answers: one request only (it stays pending).
 TEST(Tracker, ScriptedDriftRequestsAtHandComputedPoints) {
     for (bool answer : {true, false}) {
-        ArrivalTracker tracker(config());
+        ArrivalTracker tracker(tracker_config());
         tracker.add_problem("p", {{"a", 0.9}, {"b", 0.1}});
         Feeder feed(tracker);
         for (int i = 0; i < 9; ++i)
@@ -112,7 +111,7 @@ TEST(Tracker, ScriptedDriftRequestsAtHandComputedPoints) {
 // A new task with its problem: taken in, estimated, and a request that adds it goes out at
 // once. The answer includes it: a task of the problem from then on.
 TEST(Tracker, NewTaskIsProposedAndAdopted) {
-    ArrivalTracker tracker(config());
+    ArrivalTracker tracker(tracker_config());
     tracker.add_problem("p", {{"a", 1}});
     Feeder feed(tracker);
     feed.send("a");
@@ -133,7 +132,7 @@ TEST(Tracker, NewTaskIsProposedAndAdopted) {
 
 // The answer comes back without the new task: refused, unknown from then on.
 TEST(Tracker, RefusedNewTaskBecomesUnknown) {
-    ArrivalTracker tracker(config());
+    ArrivalTracker tracker(tracker_config());
     tracker.add_problem("p", {{"a", 1}});
     Feeder feed(tracker);
     ASSERT_TRUE(feed.send("c", "p", "(bad pddl").request);
@@ -144,7 +143,7 @@ TEST(Tracker, RefusedNewTaskBecomesUnknown) {
 
 // A new task arriving while a drift request is pending waits for that answer, then goes out.
 TEST(Tracker, NewTaskWhilePendingGoesOutAfterTheAnswer) {
-    ArrivalTracker tracker(config());
+    ArrivalTracker tracker(tracker_config());
     tracker.add_problem("p", {{"a", 0.5}, {"b", 0.5}});
     Feeder feed(tracker);
     std::optional<Request> pending;
@@ -165,7 +164,7 @@ TEST(Tracker, NewTaskWhilePendingGoesOutAfterTheAnswer) {
 // tasks that do not exist. New tasks are taken in at most `burst` at once, then one per
 // interval, and max_new_tasks in all; the rest count as unknown and may come again.
 TEST(Tracker, NewTasksAreTakenInAtABoundedRateAndCount) {
-    TrackerConfig c = config();
+    TrackerConfig c = tracker_config();
     c.new_task_burst = 3;
     c.new_task_interval_s = 10;
     c.max_new_tasks = 5;

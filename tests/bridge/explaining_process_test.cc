@@ -23,7 +23,7 @@ namespace {
 
 using namespace std::chrono_literals;
 
-const std::string SPEC = SOURCE + "/tests/bridge/data/restaurant-explaining.textproto";
+const std::string EXPLAINING_SPEC = SOURCE + "/tests/bridge/data/restaurant-explaining.textproto";
 
 const envdesign::task_result_t &task(const envdesign::design_result_t &r, const std::string &n) {
     for (const auto &t : r.tasks)
@@ -38,7 +38,7 @@ TEST(BridgeExplaining, OptionsAndExplanationsFollowTheDrift) {
     Listener lcm(lcm_url(port));
     Process bridge({BIN + "/envdesign-bridge",
                     "--problem",
-                    "restaurant=" + SPEC,
+                    "restaurant=" + EXPLAINING_SPEC,
                     "--domain",
                     std::to_string(domain),
                     "--lcm-url",
@@ -100,7 +100,7 @@ TEST(BridgeExplaining, OptionsAndExplanationsFollowTheDrift) {
         EXPECT_EQ(t.explanation.differences, std::vector<std::string>{"-init (connected c10 c11)"});
     }
     EXPECT_LT(d.at("serve-g1"), 0.3);
-    nlohmann::json want = self_contained(dir, SPEC, d);
+    nlohmann::json want = self_contained(dir, EXPLAINING_SPEC, d);
     EXPECT_EQ(want.at("design"), nlohmann::json(barrier));
     EXPECT_NEAR(want.at("objective").get<double>(), last.best.objective, 1e-9);
     EXPECT_EQ(bridge.stop(), 0);

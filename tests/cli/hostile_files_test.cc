@@ -16,7 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string DATA = std::string(ENVDESIGN_TEST_DATA);
 const std::string DOMAIN = DATA + "/tiny/domain.pddl";
 const std::string PROBLEM = DATA + "/tiny/problem.pddl";
 const std::string EXAMPLES = std::string(ENVDESIGN_TEST_DATA) + "/../../examples/restaurant";

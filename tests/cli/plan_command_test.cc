@@ -9,7 +9,6 @@
 namespace envdesign::testing {
 namespace {
 
-const std::string DATA = std::string(ENVDESIGN_TEST_DATA);
 const std::string IPC = std::string(ENVDESIGN_SHARED_DIR) + "/benchmarks/ipc/";
 
 TEST(PlanCommand, PrintsTheOptimalPlanInSasPlanFormat) {

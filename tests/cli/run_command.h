@@ -8,9 +8,12 @@
 
 namespace envdesign::testing {
 
+// tests/data; here once, as test files of a unity batch share their file-local names.
+inline const std::string DATA = ENVDESIGN_TEST_DATA;
+
 struct CommandResult {
     int exit_code = -1;
-    std::string out;  // stdout and, with `merge_stderr`, stderr
+    std::string out; // stdout and, with `merge_stderr`, stderr
 };
 
 inline CommandResult run_envdesign(const std::string &arguments, bool merge_stderr = true) {
@@ -28,4 +31,4 @@ inline CommandResult run_envdesign(const std::string &arguments, bool merge_stde
     return result;
 }
 
-}  // namespace envdesign::testing
+} // namespace envdesign::testing

@@ -14,7 +14,7 @@ namespace envdesign::design {
 using spec::load_design_problem;
 namespace {
 
-const std::string SPEC = std::string(ENVDESIGN_EXAMPLES) + "/blocksworld/design.textproto";
+const std::string BLOCKSWORLD = std::string(ENVDESIGN_EXAMPLES) + "/blocksworld/design.textproto";
 
 int index_of(const DesignProblem &problem, const std::string &name) {
     for (std::size_t m = 0; m < problem.modifications.size(); ++m)
@@ -26,7 +26,7 @@ int index_of(const DesignProblem &problem, const std::string &name) {
 // Without design the observers expect the multi-block shortcuts: move-tower 6 (robot 10),
 // swap-pairs 4 (robot 6), interleave 10 (robot 18). The sign makes all three IE 1.
 TEST(Blocksworld, TheSignMakesEveryTaskExplicable) {
-    DesignProblem problem = load_design_problem(SPEC);
+    DesignProblem problem = load_design_problem(BLOCKSWORLD);
     LocalEvaluator evaluator(problem, 2);
     DesignResult r = search_design(problem, evaluator, {});
     EXPECT_TRUE(r.optimal);
@@ -40,7 +40,7 @@ TEST(Blocksworld, TheSignMakesEveryTaskExplicable) {
 }
 
 TEST(Blocksworld, EveryConfigurationWithoutBoundsAgrees) {
-    DesignProblem problem = load_design_problem(SPEC);
+    DesignProblem problem = load_design_problem(BLOCKSWORLD);
     PlanCache planner(planning::PlannerOptions{});
     const double f = (1 - std::pow(0.9, 10)) / 0.1;
     RankedDesign best;
@@ -69,7 +69,7 @@ TEST(Blocksworld, EveryConfigurationWithoutBoundsAgrees) {
 }
 
 TEST(Blocksworld, APosterNobodyReadsCostsNoPlannerRun) {
-    DesignProblem problem = load_design_problem(SPEC);
+    DesignProblem problem = load_design_problem(BLOCKSWORLD);
     PlanCache planner(planning::PlannerOptions{});
     int poster = index_of(problem, "poster");
     ASSERT_GE(poster, 0);

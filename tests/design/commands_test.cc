@@ -1,6 +1,7 @@
 // `envdesign explicable` and `envdesign design` as users run them: output, JSON, exit codes.
 
 #include "../cli/run_command.h"
+#include "example_paths.h"
 
 #include <nlohmann/json.hpp>
 
@@ -10,9 +11,6 @@
 
 namespace envdesign::testing {
 namespace {
-
-const std::string RESTAURANT = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/";
-const std::string ROADS = std::string(ENVDESIGN_TEST_DATA) + "/design/roads/";
 
 nlohmann::json run_json(const std::string &arguments, int expected_exit) {
     CommandResult result = run_envdesign(arguments, false);

@@ -25,9 +25,9 @@
 namespace envdesign::design {
 namespace {
 
-class Random {
+class Dice {
 public:
-    explicit Random(unsigned seed) : engine_(seed * 104729u + 7u) {}
+    explicit Dice(unsigned seed) : engine_(seed * 104729u + 7u) {}
     int below(int n) { return static_cast<int>(engine_() % static_cast<unsigned>(n)); }
     bool percent(int p) { return below(100) < p; }
 
@@ -108,7 +108,7 @@ ModelPair models_of(const TinyTask &t) {
 }
 
 TinyTask generate(unsigned seed) {
-    Random r(seed);
+    Dice r(seed);
     TinyTask t;
     t.nodes = 3 + r.below(2);
     t.goal = 1 + r.below(t.nodes - 1);

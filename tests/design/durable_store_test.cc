@@ -6,6 +6,7 @@
 #include "design/evaluation_record.h"
 #include "design/local_evaluator.h"
 #include "design/stored_evaluator.h"
+#include "example_paths.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
@@ -19,9 +20,6 @@ using spec::load_design_problem;
 namespace {
 
 namespace fs = std::filesystem;
-
-const std::string SPEC =
-    std::string(ENVDESIGN_TEST_DATA) + "/../arrivals/data/restaurant-drift.textproto";
 
 TaskExplicability solved() {
     TaskExplicability e;
@@ -111,7 +109,7 @@ protected:
 // A search over a durable store; the process "restarts" (new file handle, new store, new
 // evaluator): the same problem is answered from the file without a planner.
 TEST_F(DurableStoreTest, ASearchIsAnsweredFromTheFileAfterReopening) {
-    DesignProblem problem = load_design_problem(SPEC);
+    DesignProblem problem = load_design_problem(RESTAURANT_DRIFT);
     TaskKey scope = store_key(problem, heuristics::HeuristicKind::LMCUT);
     DesignResult first;
     {
@@ -143,7 +141,7 @@ TEST_F(DurableStoreTest, ASearchIsAnsweredFromTheFileAfterReopening) {
 
 // What keep() returned from is in the file, before any search finished.
 TEST_F(DurableStoreTest, KeptEntriesAreInTheFileAtOnce) {
-    DesignProblem problem = load_design_problem(SPEC);
+    DesignProblem problem = load_design_problem(RESTAURANT_DRIFT);
     TaskKey scope = store_key(problem, heuristics::HeuristicKind::LMCUT);
     TaskKey task = task_key(problem, 0);
     EvaluationStore writer(open(), scope);

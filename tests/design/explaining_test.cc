@@ -7,6 +7,7 @@
 #include "design/evaluation_record.h"
 #include "design/explaining.h"
 #include "design/local_evaluator.h"
+#include "example_paths.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
@@ -94,9 +95,7 @@ TEST(ChooseBehaviour, TiesActAndOnlyExplainingCanSaveAnInexplicableTask) {
     EXPECT_FALSE(choose_behaviour(paper, t).finite);
 }
 
-const std::string RESTAURANT = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/";
-
-DesignResult run(const DesignProblem &problem, SearchMethod method = SearchMethod::WITNESS) {
+DesignResult run_design(const DesignProblem &problem, SearchMethod method = SearchMethod::WITNESS) {
     LocalEvaluator evaluator(problem, 1);
     DesignSearchOptions options;
     options.method = method;
@@ -110,7 +109,7 @@ DesignResult run(const DesignProblem &problem, SearchMethod method = SearchMetho
 TEST(ExplainingRestaurant, CheapExplanationsBeatBarriers) {
     DesignProblem problem =
         load_design_problem(RESTAURANT + "c-two-tasks-t10-explaining.textproto");
-    DesignResult r = run(problem);
+    DesignResult r = run_design(problem);
     ASSERT_TRUE(r.best);
     EXPECT_TRUE(r.optimal);
     EXPECT_TRUE(r.best->ranked.configuration.empty());
@@ -134,7 +133,7 @@ TEST(ExplainingRestaurant, DearExplanationsTakeThePapersBarriers) {
     DesignProblem problem =
         load_design_problem(RESTAURANT + "c-two-tasks-t10-explaining.textproto");
     problem.weights.explanation_cost = 20;
-    DesignResult r = run(problem);
+    DesignResult r = run_design(problem);
     ASSERT_TRUE(r.best);
     EXPECT_TRUE(r.optimal);
     EXPECT_EQ(design_names(problem, r.best->ranked.configuration),
@@ -292,7 +291,7 @@ TEST(ExplainingSearch, WitnessAndExhaustiveAgreeWithEveryConfiguration) {
         DesignProblem p = generated_problem(seed);
         RankedDesign expected = every_configuration(p, explained);
         for (SearchMethod method : {SearchMethod::WITNESS, SearchMethod::EXHAUSTIVE}) {
-            DesignResult r = run(p, method);
+            DesignResult r = run_design(p, method);
             ASSERT_TRUE(r.best);
             EXPECT_TRUE(r.optimal);
             EXPECT_EQ(r.best->ranked.configuration, expected.configuration);

@@ -4,6 +4,7 @@
 #include "brute_force.h"
 #include "design/compilation.h"
 #include "design/explicability.h"
+#include "example_paths.h"
 #include "pddl/parser.h"
 #include "validate/plan_validator.h"
 
@@ -13,9 +14,6 @@
 
 namespace envdesign::design {
 namespace {
-
-const std::string ROADS = std::string(ENVDESIGN_TEST_DATA) + "/design/roads/";
-const std::string RESTAURANT = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/";
 
 ModelPair load(const std::string &dir, const std::string &domain, const std::string &robot,
                const std::string &human) {

@@ -5,6 +5,7 @@
 #include "brute_force.h"
 #include "design/explicability.h"
 #include "design/minimal_explanation.h"
+#include "example_paths.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
@@ -123,8 +124,6 @@ TEST(MinimalExplanation, CheckAgreesWithEnumeratedHumanOptimum) {
     }
     EXPECT_GE(checked, 20);
 }
-
-const std::string RESTAURANT = std::string(ENVDESIGN_EXAMPLES) + "/restaurant/";
 
 ModelPair restaurant(const std::string &task) {
     ModelPair m;

@@ -37,7 +37,7 @@ TEST(Numbers, PlanCostsAreThirtyTwoBitCostsOrNoPlan) {
     EXPECT_FALSE(valid_plan_cost(-1));
 }
 
-TaskExplicability solved() {
+TaskExplicability solved_example() {
     TaskExplicability e;
     e.status = ExplicabilityStatus::SOLVED;
     e.ie = std::exp(2.0);
@@ -49,9 +49,9 @@ TaskExplicability solved() {
 }
 
 TEST(Numbers, EvaluationsWithValuesNoPlannerGives) {
-    EXPECT_FALSE(evaluation_problem(solved()));
+    EXPECT_FALSE(evaluation_problem(solved_example()));
     auto with = [](auto change) {
-        TaskExplicability e = solved();
+        TaskExplicability e = solved_example();
         change(e);
         return evaluation_problem(e).has_value();
     };
@@ -71,12 +71,12 @@ TEST(Numbers, EvaluationsWithValuesNoPlannerGives) {
 }
 
 TEST(Numbers, StoredRecordsAreCheckedWhenRead) {
-    TaskExplicability good = solved();
+    TaskExplicability good = solved_example();
     ASSERT_TRUE(decode_evaluation(encode_evaluation(good)));
-    TaskExplicability bad = solved();
+    TaskExplicability bad = solved_example();
     bad.ie = NaN;
     EXPECT_FALSE(decode_evaluation(encode_evaluation(bad)));
-    bad = solved();
+    bad = solved_example();
     bad.human_plan_cost = 1e308;
     EXPECT_FALSE(decode_evaluation(encode_evaluation(bad)));
     EXPECT_EQ(decode_robot_bound(encode_robot_bound(12)), 12);

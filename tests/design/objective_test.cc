@@ -10,7 +10,7 @@
 namespace envdesign::design {
 namespace {
 
-TaskExplicability solved(double ie, double robot_cost) {
+TaskExplicability solved_with(double ie, double robot_cost) {
     TaskExplicability t;
     t.status = ExplicabilityStatus::SOLVED;
     t.ie = ie;
@@ -49,7 +49,7 @@ TEST(Objective, DiscountedHorizon) {
 //   objective = 2 * 2.625 + 5 * 1.5 + 0.5 * 15 = 5.25 + 7.5 + 7.5 = 20.25
 TEST(Objective, NonUniformProbabilitiesHorizonAndDiscount) {
     DesignProblem problem = two_tasks(0.25, 0.75, {2, 5, 0.5, 0.5, 3});
-    Objective o = objective_of(problem, 1.5, {solved(3, 8), solved(1, 4)});
+    Objective o = objective_of(problem, 1.5, {solved_with(3, 8), solved_with(1, 4)});
     EXPECT_DOUBLE_EQ(o.terms.inexplicability, 2.625);
     EXPECT_DOUBLE_EQ(o.terms.design_cost, 1.5);
     EXPECT_DOUBLE_EQ(o.terms.robot_cost, 15);
@@ -58,10 +58,10 @@ TEST(Objective, NonUniformProbabilitiesHorizonAndDiscount) {
 
 TEST(Objective, AnInexplicableTaskMakesItInfinite) {
     DesignProblem problem = two_tasks(0.5, 0.5, {1, 1, 1, 1, 1});
-    EXPECT_TRUE(std::isinf(objective_of(problem, 0, {solved(1, 1), inexplicable()}).value));
+    EXPECT_TRUE(std::isinf(objective_of(problem, 0, {solved_with(1, 1), inexplicable()}).value));
     // ... unless it never happens.
     DesignProblem never = two_tasks(1, 0, {1, 1, 1, 1, 1});
-    EXPECT_DOUBLE_EQ(objective_of(never, 0, {solved(2, 3), inexplicable()}).value, 5);
+    EXPECT_DOUBLE_EQ(objective_of(never, 0, {solved_with(2, 3), inexplicable()}).value, 5);
 }
 
 // Unknown tasks count with IE 1 (EXP_COST_DIFF) or 0 (COST_DIFF) and robot cost 0.
@@ -70,14 +70,14 @@ TEST(Objective, AnInexplicableTaskMakesItInfinite) {
 //   COST_DIFF: E[IE] >= 0.75 -> 2 * 1.3125 + 7.5 + 3 = 13.125
 TEST(Objective, LowerBoundWithUnknownTasks) {
     DesignProblem problem = two_tasks(0.25, 0.75, {2, 5, 0.5, 0.5, 3});
-    TaskExplicability known = solved(3, 8);
+    TaskExplicability known = solved_with(3, 8);
     EXPECT_DOUBLE_EQ(objective_lower_bound(problem, 1.5, {&known, nullptr}), 15.75);
     problem.weights.distance = Distance::COST_DIFF;
     EXPECT_DOUBLE_EQ(objective_lower_bound(problem, 1.5, {&known, nullptr}), 13.125);
     TaskExplicability bad = inexplicable();
     EXPECT_TRUE(std::isinf(objective_lower_bound(problem, 0, {nullptr, &bad})));
     // The bound never exceeds the objective once all is known.
-    TaskExplicability other = solved(1, 4);
+    TaskExplicability other = solved_with(1, 4);
     EXPECT_LE(objective_lower_bound(problem, 1.5, {&known, &other}),
               objective_of(problem, 1.5, {known, other}).value + 1e-12);
 }

@@ -1,6 +1,7 @@
 // The evaluation store: content keys, and a search answered from it.
 
 #include "design/stored_evaluator.h"
+#include "example_paths.h"
 
 #include "design/design_search.h"
 #include "design/local_evaluator.h"
@@ -13,13 +14,10 @@ namespace envdesign::design {
 using spec::load_design_problem;
 namespace {
 
-const std::string SPEC =
-    std::string(ENVDESIGN_TEST_DATA) + "/../arrivals/data/restaurant-drift.textproto";
-
 // Probabilities, task names and the objective's weights do not change what an evaluation
 // is; the models, the modifications' edits and the distance do.
 TEST(StoreKey, IgnoresWhatOnlyWeighs) {
-    DesignProblem a = load_design_problem(SPEC);
+    DesignProblem a = load_design_problem(RESTAURANT_DRIFT);
     DesignProblem b = a;
     b.tasks[0].probability = 0.2;
     b.tasks[0].name = "renamed";
@@ -48,7 +46,7 @@ TEST(StoreKey, IgnoresWhatOnlyWeighs) {
 // A second problem with the same content (a task renamed, other weights) searched with a
 // fresh LocalEvaluator but the first one's store: no planner run, no task evaluated.
 TEST(StoredEvaluator, AnswersFromAnotherSearchesStore) {
-    DesignProblem a = load_design_problem(SPEC);
+    DesignProblem a = load_design_problem(RESTAURANT_DRIFT);
     EvaluationStore store;
     LocalEvaluator local_a(a, 1);
     StoredEvaluator stored_a(a, local_a, store);

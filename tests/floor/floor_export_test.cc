@@ -26,7 +26,7 @@ using testing::MapText;
 
 // The L of floor_cli_test in metres: dock (0,0) - v1 (0,4) - shelf (4,4), and a one-way
 // lane shelf -> v3 (8,4) whose reverse people expect.
-MapText l_shape() {
+MapText l_shape_in_metres() {
     MapText m;
     m.coordinate_system = "cartesian_meters";
     m.vertices = {{0, 0, "dock"}, {0, 4, ""}, {4, 4, "shelf"}, {8, 4, "pack"}};
@@ -49,7 +49,7 @@ const char *BARRIER = R"({"zones": [{"zoneId": "barrier", "zoneType": "BLOCKED",
   "vertices": [{"x": 1.5, "y": 1.5}, {"x": 2.5, "y": 1.5}, {"x": 2.5, "y": 2.5}, {"x": 1.5, "y": 2.5}]}]})";
 
 TEST(FloorExport, TheMapCopyReimportsWithTheNewLanesAsRobotEdges) {
-    fs::path dir = imported("export-rmf", l_shape());
+    fs::path dir = imported("export-rmf", l_shape_in_metres());
     ExportReport r = export_design(
         {(dir / "in").string(), {"lane-v0-v2", "lane-v2-v3"}, (dir / "out").string()});
     ASSERT_EQ(r.written.size(), 2u);
@@ -70,7 +70,7 @@ TEST(FloorExport, TheMapCopyReimportsWithTheNewLanesAsRobotEdges) {
 }
 
 TEST(FloorExport, TheGeoJsonHasEveryChosenCandidateInMetres) {
-    fs::path dir = imported("export-geojson", l_shape(), BARRIER);
+    fs::path dir = imported("export-geojson", l_shape_in_metres(), BARRIER);
     export_design({(dir / "in").string(), {"tape-v0-v2", "barrier"}, (dir / "out").string()});
     auto doc = nlohmann::json::parse(testing::read_text(dir / "out/design.geojson"));
     EXPECT_EQ(doc["type"], "FeatureCollection");
@@ -89,7 +89,7 @@ TEST(FloorExport, TheGeoJsonHasEveryChosenCandidateInMetres) {
 }
 
 TEST(FloorExport, UnknownNamesAndExportingOntoTheMapAreRefused) {
-    fs::path dir = imported("export-bad", l_shape());
+    fs::path dir = imported("export-bad", l_shape_in_metres());
     EXPECT_THROW(export_design({(dir / "in").string(), {"tape-v9-v10"}, (dir / "out").string()}),
                  FloorError);
     EXPECT_THROW(export_design({(dir / "in").string(), {"tape-v0-v2"}, dir.string()}), FloorError);

@@ -41,7 +41,7 @@ std::string three_nodes() {
                   edge(13, 2, 2)});
 }
 
-std::string error_of(const std::string &text) {
+std::string graph_error_of(const std::string &text) {
     try {
         parse_route_graph(text, "route.geojson");
     } catch (const pddl::ParseError &e) {
@@ -71,38 +71,43 @@ TEST(RouteGraph, AGivenCostIsTheEdgesLengthInMetres) {
 }
 
 TEST(RouteGraph, FaultsAreAtTheirLine) {
-    EXPECT_NE(error_of("{\"features\": [\n  {]}").find("route.geojson:2:4: error: malformed JSON"),
-              std::string::npos)
-        << error_of("{\"features\": [\n  {]}");
+    EXPECT_NE(
+        graph_error_of("{\"features\": [\n  {]}").find("route.geojson:2:4: error: malformed JSON"),
+        std::string::npos)
+        << graph_error_of("{\"features\": [\n  {]}");
     std::string twice = graph({node(0, 0, 0), node(0, 1, 0), edge(5, 0, 0)});
-    EXPECT_NE(error_of(twice).find("route.geojson:3:"), std::string::npos) << error_of(twice);
-    EXPECT_NE(error_of(twice).find("node id 0 is given twice"), std::string::npos);
+    EXPECT_NE(graph_error_of(twice).find("route.geojson:3:"), std::string::npos)
+        << graph_error_of(twice);
+    EXPECT_NE(graph_error_of(twice).find("node id 0 is given twice"), std::string::npos);
     std::string unknown = graph({node(0, 0, 0), node(1, 1, 0), edge(5, 0, 7)});
-    EXPECT_NE(error_of(unknown).find("route.geojson:4:"), std::string::npos) << error_of(unknown);
-    EXPECT_NE(error_of(unknown).find("edge 2 names node 7, which is not in the graph"),
+    EXPECT_NE(graph_error_of(unknown).find("route.geojson:4:"), std::string::npos)
+        << graph_error_of(unknown);
+    EXPECT_NE(graph_error_of(unknown).find("edge 2 names node 7, which is not in the graph"),
               std::string::npos);
     std::string no_id = graph(
         {node(0, 0, 0),
          R"({"type": "Feature", "geometry": {"type": "Point", "coordinates": [1, 1]}, "properties": {"id": "a"}})"});
-    EXPECT_NE(error_of(no_id).find("node 1's id is not an integer id >= 0"), std::string::npos);
+    EXPECT_NE(graph_error_of(no_id).find("node 1's id is not an integer id >= 0"),
+              std::string::npos);
     std::string degrees = "{\"crs\": {\"type\": \"name\", \"properties\": {\"name\": "
                           "\"urn:ogc:def:crs:EPSG::4326\"}}, \"features\": []}";
-    EXPECT_NE(error_of(degrees).find("is not supported: a route graph must be in metres"),
+    EXPECT_NE(graph_error_of(degrees).find("is not supported: a route graph must be in metres"),
               std::string::npos);
     std::string huge = graph({node(0, 0, 0), node(1, 2e6, 0), edge(5, 0, 1)});
-    EXPECT_NE(error_of(huge).find("x is not a finite number within 1e6"), std::string::npos);
-    EXPECT_NE(error_of(graph({node(0, 0, 0)})).find("no edge between two nodes"),
+    EXPECT_NE(graph_error_of(huge).find("x is not a finite number within 1e6"), std::string::npos);
+    EXPECT_NE(graph_error_of(graph({node(0, 0, 0)})).find("no edge between two nodes"),
               std::string::npos);
     // Found by mutating the example: a number beyond a double, coordinates that are no list.
-    EXPECT_NE(error_of("{\"features\": [1e400]}")
+    EXPECT_NE(graph_error_of("{\"features\": [1e400]}")
                   .find("route.geojson:1:1: error: malformed "
                         "JSON: number overflow"),
               std::string::npos)
-        << error_of("{\"features\": [1e400]}");
+        << graph_error_of("{\"features\": [1e400]}");
     std::string flat =
         R"({"features": [{"type": "Feature", "geometry": {"type": "Point", "coordinates": 5}, "properties": {"id": 1}}]})";
-    EXPECT_NE(error_of(flat).find("error: node 1 has no coordinates [x, y]"), std::string::npos)
-        << error_of(flat);
+    EXPECT_NE(graph_error_of(flat).find("error: node 1 has no coordinates [x, y]"),
+              std::string::npos)
+        << graph_error_of(flat);
 }
 
 TEST(Pgm, BinaryAndPlainAreReadAndScaledTo255) {

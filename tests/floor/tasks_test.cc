@@ -17,7 +17,7 @@ namespace {
 using testing::MapText;
 
 // v0 dock <-> v1 "" <-> v2 shelf, v2 -> v3 pack (one way), v4 "shelf" (a second shelf) <-> v1.
-Floor site() {
+Floor site_floor() {
     MapText m;
     m.coordinate_system = "cartesian_meters";
     m.vertices = {{0, 0, "dock"}, {5, 0, ""}, {10, 0, "shelf"}, {15, 0, "pack"}, {5, 5, "shelf"}};
@@ -27,7 +27,7 @@ Floor site() {
 
 std::string csv_error(const std::string &csv) {
     try {
-        parse_tasks_csv(csv, "tasks.csv", site());
+        parse_tasks_csv(csv, "tasks.csv", site_floor());
     } catch (const pddl::ParseError &e) {
         return e.what();
     }
@@ -35,8 +35,8 @@ std::string csv_error(const std::string &csv) {
 }
 
 TEST(Tasks, CsvRowsByLabelOrObjectInFileOrder) {
-    auto tasks =
-        parse_tasks_csv("from,to,weight\ndock,v2,3\r\n\nv3, dock ,1.5\n", "tasks.csv", site());
+    auto tasks = parse_tasks_csv("from,to,weight\ndock,v2,3\r\n\nv3, dock ,1.5\n", "tasks.csv",
+                                 site_floor());
     ASSERT_EQ(tasks.size(), 2u);
     EXPECT_EQ(tasks[0].name(), "v0-v2");
     EXPECT_EQ(*tasks[0].weight, 3);
@@ -85,7 +85,7 @@ TEST(Tasks, CsvFaultsAreAtTheirLineAndColumn) {
 }
 
 TEST(Tasks, DefaultIsEveryOrderedPairOfNamedPlacesByVertexNumber) {
-    auto tasks = default_tasks(site());
+    auto tasks = default_tasks(site_floor());
     std::vector<std::string> names;
     for (const auto &t : tasks)
         names.push_back(t.name());
@@ -97,7 +97,7 @@ TEST(Tasks, DefaultIsEveryOrderedPairOfNamedPlacesByVertexNumber) {
 }
 
 TEST(Tasks, UnreachablePairsAreDroppedWithAWarningNamingThem) {
-    Floor f = site();
+    Floor f = site_floor();
     FloorGraph g = build_floor_graph(f, 10);
     std::vector<std::string> warnings;
     auto kept = drop_unreachable(default_tasks(f), f, g, warnings);
@@ -128,7 +128,7 @@ namespace {
 TEST(Tasks, ASpreadsheetsByteOrderMarkIsNoFault) {
     auto tasks = parse_tasks_csv("\xEF\xBB\xBF"
                                  "from,to,weight\ndock,pack,1\n",
-                                 "t.csv", site());
+                                 "t.csv", site_floor());
     ASSERT_EQ(tasks.size(), 1u);
     EXPECT_EQ(tasks[0].name(), "v0-v3");
 }
