@@ -16,6 +16,7 @@
 
 #include <envdesign/client/client.h>
 
+#include <algorithm>
 #include <atomic>
 #include <fstream>
 #include <iostream>
@@ -49,6 +50,45 @@ protected:
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> seconds) {
+    std::sort(seconds.begin(), seconds.end());
+    return seconds[seconds.size() / 2];
+}
+
+// A copy of blocksworld problem 14 (3 tasks, 6 modifications: about 2 s of work on two quiet
+// planners) whose PDDL files end in a comment of their own: a planner keeps its plans by
+// spec, so a second run of the same spec is nearly free (0.1 s); each timed run asks anew.
+std::string fresh_blocksworld(const fs::path &dir, int copy) {
+    const fs::path from = source("tests/data/paper/blocksworld");
+    const fs::path to = dir / ("blocksworld-" + std::to_string(copy));
+    fs::create_directories(to / "14");
+    auto copy_file = [&](const fs::path &file, const fs::path &into) {
+        std::ifstream in(file);
+        std::ofstream out(into / file.filename());
+        out << in.rdbuf();
+        if (file.extension() == ".pddl")
+            out << "\n; copy " << copy << "\n";
+    };
+    for (const auto &entry : fs::directory_iterator(from))
+        if (entry.path().extension() == ".pddl")
+            copy_file(entry.path(), to);
+    for (const auto &entry : fs::directory_iterator(from / "14"))
+        copy_file(entry.path(), to / "14");
+    return (to / "14" / "design-t10.textproto").string();
+}
+
+// The seconds `spec` took through the cluster, its JSON result in `json`.
+double timed_design(const std::string &spec, LocalCluster &cluster, const client::Options &options,
+                    nlohmann::json &json) {
+    auto start = std::chrono::steady_clock::now();
+    client::Result result = client::run_design_remote(spec, cluster.url(), options);
+    double took = seconds_since(start);
+    EXPECT_EQ(result.exit_code, 0) << spec << ": " << result.error << cluster.logs();
+    if (result.exit_code == 0)
+        json = nlohmann::json::parse(result.json);
+    return took;
 }
 
 // A request without a time limit ends at the coordinator's --max-time-limit: exit 4 with
@@ -117,7 +157,9 @@ TEST_F(Starvation, APlannerStopsWithinASecondOfSigterm) {
 // client names in one process. On a keyed bus the process is the client (fair_share.h): the
 // flood shares the planners with a well-behaved client, whose request gets them within a
 // heartbeat and finishes within twice its quiet time; the planners' resident memory stays
-// under --job-memory-mb.
+// under --job-memory-mb. Two sizes, three runs each, quiet then flooded: the restaurant
+// (0.04 s quiet, where one withdrawal round trip is most of the time) and blocksworld 14
+// (a few seconds of planner work: the share of the planners is what counts).
 TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     std::string key = (dir / "bus.key").string();
     std::ofstream(key) << "k1 " << std::string(64, '7') << "\n";
@@ -130,13 +172,17 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
             &cluster.add_planner({"--job-memory-mb", "128", "--remembered-answers", "0"}));
     const std::string restaurant = source("examples/restaurant/c-two-tasks-t10.textproto");
     client::Options options;
-    options.give_up_after_s = 30;
+    options.give_up_after_s = 60;
     options.key_file = key;
-    ASSERT_EQ(client::run_design_remote(restaurant, cluster.url(), options).exit_code, 0)
-        << cluster.logs(); // warm: the coordinator is past its discovery
-    auto start = std::chrono::steady_clock::now();
-    ASSERT_EQ(client::run_design_remote(restaurant, cluster.url(), options).exit_code, 0);
-    double quiet = seconds_since(start);
+    nlohmann::json small, large, want_large;
+    timed_design(restaurant, cluster, options, small); // warm: the coordinator is past discovery
+    constexpr int RUNS = 3;
+    std::vector<double> quiet_small, quiet_large, flooded_small, flooded_large;
+    for (int run = 0; run < RUNS; ++run) {
+        quiet_small.push_back(timed_design(restaurant, cluster, options, small));
+        quiet_large.push_back(
+            timed_design(fresh_blocksworld(dir, run), cluster, options, want_large));
+    }
 
     bus::Bus flood(
         cluster.url(),
@@ -172,17 +218,34 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
         }
     });
     std::this_thread::sleep_for(std::chrono::seconds(5)); // the flood holds every planner
-    start = std::chrono::steady_clock::now();
-    client::Result result = client::run_design_remote(restaurant, cluster.url(), options);
-    double flooded = seconds_since(start);
-    std::this_thread::sleep_for(std::chrono::seconds(1));
+    for (int run = 0; run < RUNS; ++run) {
+        flooded_small.push_back(timed_design(restaurant, cluster, options, small));
+        expect_same_design(small, self_contained(restaurant));
+        flooded_large.push_back(
+            timed_design(fresh_blocksworld(dir, RUNS + run), cluster, options, large));
+        expect_same_design(large, want_large);
+        std::this_thread::sleep_for(std::chrono::seconds(1)); // the flood takes the planners back
+    }
     done = true;
     sampler.join();
-    ASSERT_EQ(result.exit_code, 0) << result.error << cluster.logs();
-    expect_same_design(nlohmann::json::parse(result.json), self_contained(restaurant));
-    std::cout << "quiet " << quiet << " s, under the flood " << flooded
-              << " s; planner RSS at most " << most / 1024 << " MiB\n";
-    EXPECT_LT(flooded, std::max(2 * quiet, 1.0) + 2.0) << cluster.logs();
+    auto print = [](const char *name, const std::vector<double> &quiet,
+                    const std::vector<double> &flooded) {
+        std::cout << name << ": quiet";
+        for (double s : quiet)
+            std::cout << " " << s;
+        std::cout << " s (median " << median(quiet) << "), under the flood";
+        for (double s : flooded)
+            std::cout << " " << s;
+        std::cout << " s (median " << median(flooded) << "): " << median(flooded) / median(quiet)
+                  << "x\n";
+    };
+    print("restaurant", quiet_small, flooded_small);
+    print("blocksworld 14", quiet_large, flooded_large);
+    std::cout << "planner RSS at most " << most / 1024 << " MiB\n";
+    // Loose bounds (the target is 2x): CI machines are loaded and the flood takes CPU too.
+    EXPECT_LT(median(flooded_small), std::max(2 * median(quiet_small), 1.0) + 2.0)
+        << cluster.logs();
+    EXPECT_LE(median(flooded_large), 3 * median(quiet_large)) << cluster.logs();
     EXPECT_LT(most, 128 * 1024) << "KiB: the planner's resident memory passed --job-memory-mb";
 }
 
