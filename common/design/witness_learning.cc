@@ -76,17 +76,16 @@ void DesignLearner::probe_shortcuts() {
         for (const auto &[design, probed] : probes) {
             if (options_.deadline.expired())
                 break;
-            if (!evaluate(design)) {
+            auto optimal = probe(design, probed);
+            if (!optimal) {
                 for (int t : probed)
                     active.erase(t);
                 continue;
             }
             ++result_.counters.configurations_probed;
-            const auto &tasks = known_.back().second;
-            for (int t : probed)
-                if (!(tasks[t]->evaluation.human_optimal_cost.value_or(INF) <
-                      result_.baseline->tasks[t].human_plan_cost))
-                    active.erase(t); // no cheaper plan is left
+            for (std::size_t i = 0; i < probed.size(); ++i)
+                if (!((*optimal)[i] < result_.baseline->tasks[probed[i]].human_plan_cost))
+                    active.erase(probed[i]); // no cheaper plan is left
         }
     }
 }
@@ -265,6 +264,56 @@ Record DesignLearner::inherited(const Configuration &design, int task) const {
 
 // Evaluates `design` in full, learns its plans and compares it with the best; false when a
 // limit or the deadline stopped it.
+// A probe asks about the plans of its own tasks. Where the design's other tasks need a few
+// evaluations more, the design is evaluated whole (it then bounds the search as any design
+// does: its cone, its place in the ranking); where they need tens (a floor's tape crosses
+// the routes of many tasks), they are given the empty design's values, which nothing reads
+// back, and the hitting-set phase finds the design if it is worth evaluating whole.
+std::optional<std::vector<double>> DesignLearner::probe(const Configuration &design,
+                                                        const std::vector<int> &tasks) {
+    std::vector<Record> records(tasks_);
+    int planned = 0;
+    for (int t = 0; t < tasks_; ++t)
+        if (problem_.tasks[t].probability > 0 && !(records[t] = inherited(design, t)))
+            ++planned;
+    if (planned <= 2 * static_cast<int>(tasks.size()) + 4) {
+        if (!evaluate(design))
+            return std::nullopt;
+        std::vector<double> optimal;
+        for (int t : tasks)
+            optimal.push_back(known_.back().second[t]->evaluation.human_optimal_cost.value_or(INF));
+        return optimal;
+    }
+    ConfigurationEvaluation request = unevaluated(design);
+    request.tasks.resize(tasks_);
+    for (int t = 0; t < tasks_; ++t)
+        request.tasks[t] = values_only(result_.baseline->tasks[t]);
+    for (int t : tasks) {
+        request.tasks[t].reset();
+        if (records[t]) {
+            request.tasks[t] = values_only(records[t]->evaluation);
+            ++result_.counters.tasks_inherited;
+        }
+    }
+    ConfigurationEvaluation answer;
+    EvaluationCallbacks callbacks;
+    callbacks.abandon = [](const ConfigurationEvaluation &) { return false; };
+    callbacks.done = [&](ConfigurationEvaluation e) { answer = std::move(e); };
+    evaluator_.evaluate({request}, options_.deadline, callbacks);
+    if (answer.status != EvaluationStatus::COMPLETE) {
+        limit_seen_ = limit_seen_ || answer.status == EvaluationStatus::LIMIT;
+        return std::nullopt;
+    }
+    std::vector<double> optimal;
+    for (int t : tasks) {
+        if (!records[t])
+            bound_.learn(design, t, *answer.tasks[t]);
+        const TaskExplicability &e = records[t] ? records[t]->evaluation : *answer.tasks[t];
+        optimal.push_back(e.human_optimal_cost.value_or(INF));
+    }
+    return optimal;
+}
+
 bool DesignLearner::evaluate(const Configuration &design, bool inherit) {
     ConfigurationEvaluation request = unevaluated(design);
     std::vector<Record> records(tasks_);
