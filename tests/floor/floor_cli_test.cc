@@ -98,6 +98,37 @@ TEST(FloorCli, TheWrittenSpecGivesTheDesignAnExhaustiveSearchFinds) {
     EXPECT_NE(r.out.find("8 candidates"), std::string::npos) << r.out;
 }
 
+// A zigzag aisle of eight named stations: the robot drives every zig, people see the 2 m
+// straight line past each corner (sight 2.1 m), so six tapes, and 56 tasks whose routes
+// share those lines: each tape crosses the expected routes of many tasks, where the witness
+// search's probes plan only their own task (witness_learning.cc, probe). 2^6 designs.
+TEST(FloorCli, AZigzagAisleOfManyTasksGivesTheDesignAnExhaustiveSearchFinds) {
+    MapText m;
+    m.coordinate_system = "cartesian_meters";
+    for (int i = 0; i < 8; ++i)
+        m.vertices.push_back({double(i), double(i % 2), "s" + std::to_string(i)});
+    for (int i = 0; i + 1 < 8; ++i)
+        m.lanes.push_back({i, i + 1, true});
+    fs::path dir = testing::scratch_dir("zigzag");
+    std::string map = testing::write_text(dir / "zigzag.building.yaml", m.yaml());
+    auto r = run_envdesign("floor import " + map + " -o " + (dir / "out").string() +
+                           " --sight 2.1 --candidates tape --tape-cost 0.8");
+    ASSERT_EQ(r.exit_code, 0) << r.out;
+    EXPECT_NE(r.out.find("8 places, 14 robot edges, 12 human-only edges, 56 tasks, 6 candidates"),
+              std::string::npos)
+        << r.out;
+    std::string spec = (dir / "out/design.textproto").string();
+    auto witness = design_json(spec);
+    auto exhaustive = design_json(spec, "--search exhaustive");
+    EXPECT_EQ(witness["design"], exhaustive["design"]);
+    EXPECT_NEAR(witness["objective"].get<double>(), exhaustive["objective"].get<double>(), 1e-9);
+    EXPECT_EQ(witness["status"], "optimal");
+    // The two middle lines, each on many routes, pay for their 1.6 of tape; the outer four
+    // do not (0.6, 0.7 give all six; 0.9 none).
+    EXPECT_EQ(witness["design"], nlohmann::json::array({"tape-v2-v4", "tape-v3-v5"}));
+    EXPECT_NEAR(witness["objective"].get<double>(), 66.4 / 7, 1e-9);
+}
+
 std::string run_import(const std::string &name, const std::string &yaml, const std::string &flags,
                        int expected_code) {
     fs::path dir = testing::scratch_dir(name);
