@@ -2,6 +2,7 @@
 
 #include "bus/channels.h"
 #include "bus/log.h"
+#include "cluster/planner_memory.h"
 #include "cluster/wire.h"
 #include "design/local_evaluator.h"
 #include "envdesign/planner_heartbeat_t.hpp"
@@ -9,29 +10,8 @@
 #include "pddl/parse_error.h"
 
 #include <algorithm>
-#include <fstream>
-#include <unistd.h>
 
 namespace envdesign::cluster {
-namespace {
-
-// The process's resident memory (/proc/self/statm); 0 where it cannot be read.
-std::size_t resident_bytes() {
-    std::ifstream statm("/proc/self/statm");
-    std::size_t pages = 0, resident = 0;
-    if (!(statm >> pages >> resident))
-        return 0;
-    return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-}
-
-} // namespace
-
-std::size_t job_search_budget(std::size_t job_memory_bytes, std::size_t resident, int workers) {
-    std::size_t taken =
-        resident / static_cast<std::size_t>(std::max(1, workers)) + JOB_MEMORY_MARGIN;
-    // Never 0 (that is "no limit"): a budget the process leaves no room for stops at once.
-    return job_memory_bytes > taken ? job_memory_bytes - taken : 1;
-}
 
 // One worker's evaluators, one per (spec, heuristic), each with its own plan cache.
 class WorkerCaches {
@@ -121,11 +101,7 @@ void Planner::guard_memory() {
         idle_resident_ = resident;
         return;
     }
-    // A search grows in steps (a vector or hash table doubling copies at once): measured
-    // up to 40% of what it held, within one step, so its room is cut to two thirds.
-    std::size_t room =
-        limit > idle_resident_ + JOB_MEMORY_MARGIN ? limit - idle_resident_ - JOB_MEMORY_MARGIN : 0;
-    if (resident < idle_resident_ + room / 3 * 2)
+    if (!past_memory_guard(resident, idle_resident_, limit))
         return;
     for (auto &[id, run] : running_)
         if (!run.over_memory) {

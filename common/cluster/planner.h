@@ -54,22 +54,10 @@ struct PlannerConfig {
     SpecLimits spec_limits;          // what chunks from the bus may make it hold
     // The planner's resident memory stays under workers x this: a job's search may hold
     // (A*'s registry, per-state data, open list) this less its share of what the process
-    // holds when the job's evaluator is made (job_search_budget); a job that needs more is
-    // answered LIMIT.
+    // holds when the job's evaluator is made (job_search_budget, planner_memory.h); a job
+    // that needs more is answered LIMIT.
     std::size_t job_memory_bytes = std::size_t{1} << 30;
 };
-
-// Room kept for what the search's byte count misses: the heuristic's own data, a plan being
-// built, the allocator's slack.
-inline constexpr std::size_t JOB_MEMORY_MARGIN = std::size_t{8} << 20;
-
-// Room kept for what a search's byte count misses. The planner also stops its running jobs
-// (answered LIMIT) once its resident memory passes its idle size plus two thirds of the rest
-// of workers x job_memory_bytes less this (Planner::guard_memory): a search's last growth
-// step then still fits.
-// The search data one job may hold: `job_memory_bytes` less the process's `resident` bytes
-// shared over `workers`, less JOB_MEMORY_MARGIN; at least 1 byte (0 would be "no limit").
-std::size_t job_search_budget(std::size_t job_memory_bytes, std::size_t resident, int workers);
 
 struct PlannerStats {
     long long jobs_done = 0;

@@ -4,6 +4,7 @@
 #include "harness.h"
 
 #include "bus/codec.h"
+#include "cluster/planner_memory.h"
 #include "cluster/spec_chunks.h"
 
 namespace envdesign::cluster::testing {
