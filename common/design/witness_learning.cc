@@ -264,6 +264,22 @@ Record DesignLearner::inherited(const Configuration &design, int task) const {
 
 // Evaluates `design` in full, learns its plans and compares it with the best; false when a
 // limit or the deadline stopped it.
+// The evaluator's answer to one configuration, every task known; nullopt when a limit or the
+// deadline stopped it.
+std::optional<ConfigurationEvaluation>
+DesignLearner::complete(const ConfigurationEvaluation &request) {
+    ConfigurationEvaluation answer;
+    EvaluationCallbacks callbacks;
+    callbacks.abandon = [](const ConfigurationEvaluation &) { return false; };
+    callbacks.done = [&](ConfigurationEvaluation e) { answer = std::move(e); };
+    evaluator_.evaluate({request}, options_.deadline, callbacks);
+    if (answer.status != EvaluationStatus::COMPLETE) {
+        limit_seen_ = limit_seen_ || answer.status == EvaluationStatus::LIMIT;
+        return std::nullopt;
+    }
+    return answer;
+}
+
 // A probe asks about the plans of its own tasks. Where the design's other tasks need a few
 // evaluations more, the design is evaluated whole (it then bounds the search as any design
 // does: its cone, its place in the ranking); where they need tens (a floor's tape crosses
@@ -295,20 +311,14 @@ std::optional<std::vector<double>> DesignLearner::probe(const Configuration &des
             ++result_.counters.tasks_inherited;
         }
     }
-    ConfigurationEvaluation answer;
-    EvaluationCallbacks callbacks;
-    callbacks.abandon = [](const ConfigurationEvaluation &) { return false; };
-    callbacks.done = [&](ConfigurationEvaluation e) { answer = std::move(e); };
-    evaluator_.evaluate({request}, options_.deadline, callbacks);
-    if (answer.status != EvaluationStatus::COMPLETE) {
-        limit_seen_ = limit_seen_ || answer.status == EvaluationStatus::LIMIT;
+    auto answer = complete(request);
+    if (!answer)
         return std::nullopt;
-    }
     std::vector<double> optimal;
     for (int t : tasks) {
         if (!records[t])
-            bound_.learn(design, t, *answer.tasks[t]);
-        const TaskExplicability &e = records[t] ? records[t]->evaluation : *answer.tasks[t];
+            bound_.learn(design, t, *answer->tasks[t]);
+        const TaskExplicability &e = records[t] ? records[t]->evaluation : *answer->tasks[t];
         optimal.push_back(e.human_optimal_cost.value_or(INF));
     }
     return optimal;
@@ -323,20 +333,14 @@ bool DesignLearner::evaluate(const Configuration &design, bool inherit) {
             request.tasks[t] = values_only(records[t]->evaluation);
             ++result_.counters.tasks_inherited;
         }
-    ConfigurationEvaluation answer;
-    EvaluationCallbacks callbacks;
-    callbacks.abandon = [](const ConfigurationEvaluation &) { return false; };
-    callbacks.done = [&](ConfigurationEvaluation e) { answer = std::move(e); };
-    evaluator_.evaluate({request}, options_.deadline, callbacks);
-    if (answer.status != EvaluationStatus::COMPLETE) {
-        limit_seen_ = limit_seen_ || answer.status == EvaluationStatus::LIMIT;
+    auto answer = complete(request);
+    if (!answer)
         return false;
-    }
     std::vector<TaskExplicability> tasks;
     for (int t = 0; t < tasks_; ++t) {
         if (!records[t]) {
             auto record = std::make_shared<TaskRecord>();
-            record->evaluation = std::move(*answer.tasks[t]);
+            record->evaluation = std::move(*answer->tasks[t]);
             record->touch = index_.touching(design, t, record->evaluation);
             bound_.learn(design, t, record->evaluation);
             records[t] = std::move(record);

@@ -59,6 +59,7 @@ private:
     std::optional<RootFacts> root_facts();
     // `inherit`: look for its tasks among smaller evaluated designs first.
     bool evaluate(const Configuration &design, bool inherit = true);
+    std::optional<ConfigurationEvaluation> complete(const ConfigurationEvaluation &request);
     // Evaluates `design` for `tasks` only and learns their plans; the design is not kept.
     // Per task, the human's optimal cost there (nullopt: the deadline or a limit stopped it).
     std::optional<std::vector<double>> probe(const Configuration &design,
