@@ -4,7 +4,7 @@
 #   compiler run a batch. Every file here includes ~75,000 lines of C++20 standard library
 #   (often nlohmann/json, spdlog, CLI11 and the LCM types too) and instantiates the same
 #   templates; a batch parses, instantiates and optimises them once. The libraries, services
-#   and clients: half the CPU time; the tests too, but for tests/e2e (tests/CMakeLists.txt).
+#   and clients: half the CPU time; the tests too (tests/CMakeLists.txt).
 #   A file whose file-local names collide with another's fails to compile in its batch:
 #   rename the name, move a helper several files share into a header of their folder, or
 #   set SKIP_UNITY_BUILD_INCLUSION on the file. -DENVDESIGN_UNITY_BUILD=OFF builds file by

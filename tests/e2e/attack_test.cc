@@ -29,9 +29,6 @@
 namespace envdesign::e2e {
 namespace {
 
-const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
-const char *WAREHOUSE = "tests/e2e/data/warehouse/signs-2.textproto";
-
 std::string write_key_file(const std::string &name, const std::string &line) {
     std::string path = (std::filesystem::temp_directory_path() /
                         ("envdesign-attack-" + std::to_string(getpid()) + "-" + name))
@@ -102,8 +99,8 @@ private:
     std::thread thread_;
 };
 
-client::Result design(const LocalCluster &cluster, const std::string &spec,
-                      const std::string &search = "witness") {
+client::Result keyed_design(const LocalCluster &cluster, const std::string &spec,
+                            const std::string &search = "witness") {
     client::Options options;
     options.search = search;
     options.give_up_after_s = 20;
@@ -151,7 +148,7 @@ TEST(Attack, ForgedEvaluationsWithoutAKeyUnderAnotherNameAreNotTaken) {
     LocalCluster cluster(2);
     Rogue rogue(cluster.url());
     forge_evaluations(rogue, [](const envdesign::job_t &) { return "planner-rogue"; });
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     EXPECT_TRUE(logged(cluster.coordinator(), "answered by planner-rogue, which it was not sent"))
         << cluster.logs();
 }
@@ -163,10 +160,10 @@ TEST(Attack, ForgedEvaluationsInThePlannersNameAreDroppedWithAKey) {
     auto as_holder = [](const envdesign::job_t &job) { return job.planner; };
     forge_evaluations(unsigned_rogue, as_holder);
     forge_evaluations(guessing_rogue, as_holder);
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     // The forged answers stayed out of the evaluation store too: a repeat sends jobs again
     // only if nothing was stored, and gets the same design either way.
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     for (const char *why : {"unauthenticated", "bad-mac"})
         EXPECT_TRUE(logged(cluster.coordinator(),
                            std::string("dropped a message on ENVDESIGN_EVALUATION: ") + why))
@@ -200,7 +197,7 @@ TEST(Attack, AForgedResultFromAnotherCoordinatorIsIgnoredWithoutAKey) {
     LocalCluster cluster(2);
     Rogue rogue(cluster.url());
     forge_result(rogue, "coordinator-rogue");
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
 }
 
 TEST(Attack, AForgedResultInTheCoordinatorsNameIsDroppedWithAKey) {
@@ -214,7 +211,7 @@ TEST(Attack, AForgedResultInTheCoordinatorsNameIsDroppedWithAKey) {
             forged_seen += r.design == std::vector<std::string>{"FORGED-DESIGN"};
         });
     listener.start();
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     listener.stop();
     EXPECT_EQ(forged_seen, 0);
     EXPECT_EQ(listener.bus().auth_drops().count(bus::RESULT, bus::Drop::BAD_MAC), 1);
@@ -241,7 +238,7 @@ TEST(Attack, ASpoofedCancelStopsTheSearchWithoutAKey) {
     LocalCluster cluster(2);
     Rogue rogue(cluster.url());
     spoof_cancel(rogue);
-    client::Result result = design(cluster, WAREHOUSE, "exhaustive");
+    client::Result result = keyed_design(cluster, WAREHOUSE, "exhaustive");
     EXPECT_EQ(result.exit_code, 4) << "the reason for keys: a name is all it takes";
     EXPECT_TRUE(logged(cluster.coordinator(), "cancelled by the client: spoofed"));
 }
@@ -252,7 +249,7 @@ TEST(Attack, ASpoofedCancelIsDroppedWithAKeyEvenFromAKeyHolder) {
     Rogue insider(cluster.url(), cluster.key_file()); // another process with the key
     spoof_cancel(outsider);
     spoof_cancel(insider);
-    expect_undisturbed(design(cluster, WAREHOUSE, "exhaustive"), WAREHOUSE);
+    expect_undisturbed(keyed_design(cluster, WAREHOUSE, "exhaustive"), WAREHOUSE);
     EXPECT_TRUE(
         logged(cluster.coordinator(), "dropped a message on ENVDESIGN_CANCEL: unauthenticated"))
         << cluster.logs();
@@ -282,7 +279,7 @@ void replay_test(const std::string &key_file) {
     Capture capture;
     capture.record(rogue);
     rogue.start();
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     rogue.stop();
     ASSERT_FALSE(capture.messages.empty());
     // Everything again, twice, while a second request runs.
@@ -291,7 +288,7 @@ void replay_test(const std::string &key_file) {
             for (const auto &[channel, bytes] : capture.messages)
                 rogue.bus().publish_raw(channel, bytes.data(), static_cast<int>(bytes.size()));
     });
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     replayer.join();
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     if (key_file.empty()) {
@@ -415,12 +412,12 @@ TEST(Poison, AHugeRobotBoundIsRefusedAndTheCoordinatorLives) {
     {
         Rogue rogue(cluster.url());
         forge_robot_bounds(rogue, 1e308);
-        expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+        expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     }
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     EXPECT_TRUE(logged(cluster.coordinator(), "the robot bound is not a cost")) << cluster.logs();
     cluster.restart_coordinator(SIGTERM);
-    expect_undisturbed(design(cluster, RESTAURANT), RESTAURANT);
+    expect_undisturbed(keyed_design(cluster, RESTAURANT), RESTAURANT);
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
 }
 
@@ -431,12 +428,12 @@ TEST(Poison, AnInfiniteRobotBoundNeverAbortsTheCoordinatorNorItsRestarts) {
     {
         Rogue rogue(cluster.url());
         forge_robot_bounds(rogue, std::numeric_limits<double>::infinity());
-        client::Result forged = design(cluster, RESTAURANT);
+        client::Result forged = keyed_design(cluster, RESTAURANT);
         EXPECT_EQ(forged.exit_code, 0) << forged.error << cluster.logs();
     }
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     cluster.restart_coordinator(SIGTERM);
-    client::Result after = design(cluster, RESTAURANT);
+    client::Result after = keyed_design(cluster, RESTAURANT);
     EXPECT_EQ(after.exit_code, 0) << after.error << cluster.logs();
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
 }

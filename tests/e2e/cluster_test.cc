@@ -20,9 +20,6 @@
 namespace envdesign::e2e {
 namespace {
 
-const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
-const char *WAREHOUSE = "tests/e2e/data/warehouse/signs-2.textproto";
-
 client::Result design(const LocalCluster &cluster, const std::string &spec,
                       std::function<void(const client::Progress &)> on_progress = {},
                       const std::string &search = "witness") {

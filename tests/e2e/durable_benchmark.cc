@@ -56,10 +56,6 @@ bool same_design(const nlohmann::json &a, const nlohmann::json &b) {
     return true;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 } // namespace
 
 int main(int argc, char **argv) {

@@ -127,7 +127,6 @@ long long edit_store(const fs::path &file, const std::string &sql) {
 class StoreEdits : public DurableTest, public ::testing::WithParamInterface<const char *> {};
 
 TEST_P(StoreEdits, AreDroppedAndCountedNeverUsed) {
-    const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
     fs::path state = dir / "killed";
     LocalCluster cluster(1, {"--state-dir", state.string()});
     nlohmann::json want = CliRun(cluster.url(), source(RESTAURANT), dir, "first").result();

@@ -22,9 +22,7 @@
 namespace envdesign::e2e {
 namespace {
 
-const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
-
-client::Result design(const LocalCluster &cluster) {
+client::Result restaurant_design(const LocalCluster &cluster) {
     client::Options options;
     options.give_up_after_s = 10;
     return client::run_design_remote(source(RESTAURANT), cluster.url(), options);
@@ -55,7 +53,7 @@ TEST(Hostile, DeepJsonRequestIsBadInputAndTheCoordinatorLives) {
     EXPECT_EQ(answer->exit_code, 2);
     EXPECT_NE(answer->error.find("deep.json:1:109: error:"), std::string::npos) << answer->error;
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
-    EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
+    EXPECT_EQ(restaurant_design(cluster).exit_code, 0) << cluster.logs();
 }
 
 envdesign::spec_chunk_t last_chunk_of(int number, std::int32_t claimed_bytes) {
@@ -89,7 +87,7 @@ TEST(Hostile, ChunkBombLeavesThePlannerSmall) {
     EXPECT_LT(after - before, 50 * 1024)
         << "planner grew from " << before << " to " << after << " KiB";
     EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
-    EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
+    EXPECT_EQ(restaurant_design(cluster).exit_code, 0) << cluster.logs();
 }
 
 // A string length of INT_MIN in a message: lcm-gen 1.3.1's decoder overflowed and read
@@ -114,7 +112,7 @@ TEST(Hostile, NegativeStringLengthIsMalformedNotACrash) {
     bus.handle(std::chrono::milliseconds(500));
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
-    EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
+    EXPECT_EQ(restaurant_design(cluster).exit_code, 0) << cluster.logs();
 }
 
 // LCM's own fragment reassembly (LCM 1.3.1's udpm transport, below the bus): the first
@@ -230,7 +228,7 @@ TEST(Hostile, ForgedLcmFragmentsClaimingHugeMessagesLeaveTheServicesSmall) {
         << "coordinator grew from " << coordinator_before << " to " << coordinator_after << " KiB";
     EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
-    EXPECT_EQ(design(cluster).exit_code, 0) << cluster.logs();
+    EXPECT_EQ(restaurant_design(cluster).exit_code, 0) << cluster.logs();
 }
 
 } // namespace

@@ -24,6 +24,12 @@
 
 namespace envdesign::e2e {
 
+// The specs several files here run (relative to the source tree: source(RESTAURANT)). The
+// test files compile in unity batches (tests/CMakeLists.txt): a name two of them need is
+// defined here once.
+inline const char *const RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
+inline const char *const WAREHOUSE = "tests/e2e/data/warehouse/signs-2.textproto";
+
 inline std::string source(const std::string &relative) {
     return std::string(ENVDESIGN_TEST_DATA_ROOT) + "/" + relative;
 }
@@ -38,6 +44,11 @@ inline std::string unique_url(int n = 0) {
 }
 
 using testing::Process;
+
+// Seconds from `start` to now.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // True once `line` is in what `p` printed, false if `timeout_s` passes first.
 inline bool wait_for_output(Process &p, const std::string &line, double timeout_s = 10) {

@@ -18,8 +18,6 @@ namespace {
 
 using namespace std::chrono_literals;
 
-const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
-
 // Who sent results and jobs on the bus, heard by a thread of the test's own.
 class Tally {
 public:

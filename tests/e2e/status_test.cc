@@ -18,12 +18,6 @@ namespace {
 using envdesign::service_status_t;
 using Clock = std::chrono::steady_clock;
 
-const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
-
-double since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 // Every status heard on `url` for `seconds`, in order.
 std::vector<service_status_t> listen(const std::string &url, double seconds) {
     bus::Bus bus(url, std::make_shared<spdlog::logger>(
@@ -32,7 +26,7 @@ std::vector<service_status_t> listen(const std::string &url, double seconds) {
     auto sub = bus.subscribe<service_status_t>(
         bus::STATUS, [&](const service_status_t &s) { heard.push_back(s); });
     auto start = Clock::now();
-    while (since(start) < seconds)
+    while (seconds_since(start) < seconds)
         bus.handle(std::chrono::milliseconds(20));
     return heard;
 }
@@ -214,14 +208,14 @@ TEST(Status, CommandOnAnEmptyBusSaysNoCoordinator) {
                                       &exit_code);
     EXPECT_EQ(exit_code, 1) << said;
     EXPECT_NE(said.find("no coordinator on this bus"), std::string::npos) << said;
-    EXPECT_LT(since(start), 3.0);
+    EXPECT_LT(seconds_since(start), 3.0);
 }
 
 TEST(Status, ClientWithoutCoordinatorFailsWithinTwoSeconds) {
     client::Options options; // the defaults: it would wait 30 s for an answer
     auto start = Clock::now();
     client::Result result = client::run_design_remote(source(RESTAURANT), unique_url(8), options);
-    double took = since(start);
+    double took = seconds_since(start);
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_NE(result.error.find("no coordinator on this bus"), std::string::npos) << result.error;
     EXPECT_GE(took, 1.9);

@@ -6,8 +6,6 @@
 namespace envdesign::e2e {
 namespace {
 
-const char *RESTAURANT = "examples/restaurant/c-two-tasks-t10.textproto";
-
 // `envdesign watch --lcm-url URL --seconds S [flags]` in the background, stdout to a file.
 class Watcher {
 public:
