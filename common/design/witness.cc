@@ -311,6 +311,20 @@ TouchIndex::touching_human_plan(const Configuration &configuration, int task,
     return restricting_only(touch.mods);
 }
 
+std::optional<std::vector<int>>
+TouchIndex::touching_robot_plan(const Configuration &configuration, int task,
+                                const std::vector<std::string> &plan) const {
+    const PlanTouch &touch = plan_touch(ROBOT, configuration, task, plan);
+    if (!touch.known)
+        return std::nullopt;
+    std::vector<int> mods = touch.mods;
+    mods.insert(mods.end(), every_robot_witness_.begin(), every_robot_witness_.end());
+    std::sort(mods.begin(), mods.end());
+    mods.erase(std::unique(mods.begin(), mods.end()), mods.end());
+    std::erase_if(mods, [&](int m) { return !classes_[m].restricting; });
+    return mods;
+}
+
 // Sorted, unique, restricting, with the add_goal modifications of the human's model (they
 // touch every witness).
 std::vector<int> TouchIndex::restricting_only(std::vector<int> mods) const {

@@ -82,6 +82,12 @@ public:
     std::optional<std::vector<int>> touching_human_plan(const Configuration &configuration,
                                                         int task,
                                                         const std::vector<std::string> &plan) const;
+    // The same on the robot's side: the restricting modifications that can make `plan`
+    // invalid (or dearer) as a plan of the robot's model; nullopt if a step is not an action
+    // of that model.
+    std::optional<std::vector<int>> touching_robot_plan(const Configuration &configuration,
+                                                        int task,
+                                                        const std::vector<std::string> &plan) const;
 
 private:
     struct AddedLiteral {

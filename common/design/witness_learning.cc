@@ -1,6 +1,7 @@
 #include "design/witness_learning.h"
 
 #include "design/addition_floors.h"
+#include "design/cost_optimal.h"
 #include "design/hitting_set.h"
 
 #include <algorithm>
@@ -146,14 +147,39 @@ bool DesignLearner::only_adding_added_everywhere() const {
 
 // The relaxation of hitting_set.h holds when every modification is restricting or adding,
 // of non-negative cost, the weights are non-negative and the empty design's objective is
-// finite (its floors are known). Its floors are floors on the most explicable plan's human
-// cost, so it applies to EXPLICABLE robots only (witness_bound.h: floors_hold).
+// finite (its floors are known). For EXPLICABLE robots the floors are floors on the most
+// explicable plan's human cost; for COST_OPTIMAL(_BEST_CASE) robots on the worst (best)
+// optimal plan's, with restricting modifications only (cost_optimal_floors).
 bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
-    return options_.hitting_sets && w.behaviour == RobotBehaviour::EXPLICABLE && root_ &&
-           result_.best && std::isfinite(result_.best->objective.value) &&
-           only_adding_added_everywhere() && w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 &&
-           result_.baseline && std::isfinite(result_.baseline->objective.value);
+    bool behaviour = w.behaviour == RobotBehaviour::EXPLICABLE ||
+                     (is_cost_optimal(w.behaviour) && bound_.always().empty());
+    return options_.hitting_sets && behaviour && root_ && result_.best &&
+           std::isfinite(result_.best->objective.value) && only_adding_added_everywhere() &&
+           w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 && result_.baseline &&
+           std::isfinite(result_.baseline->objective.value);
+}
+
+// COST_OPTIMAL(_BEST_CASE), every modification restricting: per task, the modifications
+// under which the empty design's worst (best) optimal plan's human cost is no floor. That
+// plan, pi_0, is a floor while it stays a robot plan: then it is still optimal (c_R* never
+// drops), so the worst case is at least its IE; for the best case c_R* is unchanged, so
+// the optimal plans are some of the empty design's, none cheaper for people than pi_0. Its
+// human cost only rises under restricting edits, and the human's optimum is bounded by the
+// pool as for EXPLICABLE robots. A modification that can break pi_0 as a robot plan drops
+// the floor, to nothing (docs/design-search.md).
+std::vector<std::vector<UseFloor>> DesignLearner::cost_optimal_floors() const {
+    std::vector<std::vector<UseFloor>> out(tasks_);
+    for (int t = 0; t < tasks_; ++t) {
+        const Record &r = root_->tasks[t];
+        if (problem_.tasks[t].probability <= 0 || !r)
+            continue;
+        auto breakers = index_.touching_robot_plan({}, t, r->evaluation.plan);
+        for (int m = 0; m < index_.size(); ++m)
+            if (breakers ? contains(*breakers, m) : index_.of(m).edits_robot)
+                out[t].push_back(UseFloor{m, -INF});
+    }
+    return out;
 }
 
 // The facts of hitting_set.h from the empty design, with the floors that adding
@@ -168,7 +194,9 @@ std::optional<RootFacts> DesignLearner::root_facts() {
     }
     facts.lower_floors.resize(tasks_);
     facts.lower_robot_floors.resize(tasks_);
-    if (!bound_.always().empty()) {
+    if (is_cost_optimal(problem_.weights.behaviour))
+        facts.lower_floors = cost_optimal_floors();
+    else if (!bound_.always().empty()) {
         std::string why;
         auto floors = addition_floors(problem_, bound_.always(), facts.floor, facts.robot_bounds,
                                       options_.deadline, why);

@@ -75,8 +75,10 @@ public:
             result_.notes.push_back(
                 "robot_behaviour " + behaviour_name(problem.weights.behaviour) +
                 ": the witnesses are the worst (best) optimal plan and, for a finite worst case, "
-                "every action of every optimal plan; the IE term is bounded by its least "
-                "value, and there is no hitting-set phase (docs/design-search.md)");
+                "every action of every optimal plan; the queue bounds the IE term by its least "
+                "value, and the hitting-set phase, where every modification restricts, by the "
+                "empty design's worst (best) optimal plan while it stays a robot plan "
+                "(docs/design-search.md)");
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
     }
 
