@@ -98,6 +98,9 @@ void JobRouter::on_evaluation(const envdesign::evaluation_t &answer) {
             return; // the job stays out; a resend will ask again
         }
     }
+    bus_.log().debug("request {} | job {} answered by {}: {:.3f} s planning, {:.3f} s queued",
+                     answer.request_id, answer.job_id, answer.sender, answer.seconds,
+                     answer.queued_seconds);
     std::vector<envdesign::job_t> to_send;
     auto record = pool_.answer(answer.job_id, answer.sender, to_send, PlannerPool::Clock::now());
     publish(to_send);
@@ -138,6 +141,9 @@ void JobRouter::publish(const std::vector<envdesign::job_t> &jobs) {
         if (job.attempt > 0)
             bus_.log().info("request {} | job {} re-sent to {} (attempt {})", job.request_id,
                             job.job_id, job.planner, job.attempt);
+        else
+            bus_.log().debug("request {} | job {} sent to {}", job.request_id, job.job_id,
+                             job.planner);
         bus_.publish(bus::JOB, job);
     }
 }

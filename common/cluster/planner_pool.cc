@@ -38,7 +38,14 @@ std::vector<envdesign::job_t> PlannerPool::heartbeat(const envdesign::planner_he
     it->second.busy_seconds = beat.busy_seconds;
     std::set<std::int64_t> held(beat.jobs.begin(), beat.jobs.end());
     std::erase_if(it->second.overdue, [&](const auto &job) { return !held.count(job.first); });
-    std::erase_if(it->second.withdrawn, [&](std::int64_t job) { return !held.count(job); });
+    for (auto w = it->second.withdrawn.begin(); w != it->second.withdrawn.end();) {
+        if (held.count(w->first)) {
+            ++w;
+            continue;
+        }
+        keep_for(it->second, w->second, now); // let go: the slot is its taker's
+        w = it->second.withdrawn.erase(w);
+    }
     auto lost_before = now - std::chrono::duration_cast<Clock::duration>(
                                  std::chrono::duration<double>(config_.lost_after_s));
     std::vector<std::int64_t> lost;
@@ -56,11 +63,16 @@ std::optional<JobRecord> PlannerPool::answer(std::int64_t job_id, const std::str
     std::lock_guard lock(mutex_);
     auto it = jobs_.find(job_id);
     note_answer_time(from, job_id, it == jobs_.end() ? nullptr : &it->second, now);
-    if (auto planner = planners_.find(from); planner != planners_.end())
-        planner->second.withdrawn.erase(job_id); // answered before the withdrawal arrived
+    if (auto planner = planners_.find(from); planner != planners_.end()) {
+        auto w = planner->second.withdrawn.find(job_id); // answered before the withdrawal came
+        if (w != planner->second.withdrawn.end()) {
+            keep_for(planner->second, w->second, now);
+            planner->second.withdrawn.erase(w);
+        }
+    }
     if (it != jobs_.end() && it->second.planner == from)
         fair_.add_service(client_of(it->second.owner),
-                          std::chrono::duration<double>(now - it->second.sent).count());
+                          std::chrono::duration<double>(now - it->second.sent).count(), now);
     if (it == jobs_.end()) {
         ++counters_.duplicates; // answered already, or never ours
         if (auto a = answered_.find(job_id); a != answered_.end())
@@ -72,11 +84,8 @@ std::optional<JobRecord> PlannerPool::answer(std::int64_t job_id, const std::str
     queue_.erase(std::remove(queue_.begin(), queue_.end(), job_id), queue_.end());
     JobRecord record = std::move(it->second);
     if (auto planner = planners_.find(record.planner);
-        planner != planners_.end() && record.planner == from && contended()) {
-        planner->second.kept_for = client_of(record.owner);
-        planner->second.kept_until = now + std::chrono::duration_cast<Clock::duration>(
-                                               std::chrono::duration<double>(config_.anticipate_s));
-    }
+        planner != planners_.end() && record.planner == from && contended())
+        keep_for(planner->second, client_of(record.owner), now);
     release(record);
     jobs_.erase(it);
     counters_.answered_by.insert(from);
@@ -196,7 +205,7 @@ void PlannerPool::forget(const std::vector<std::int64_t> &job_ids) {
         // A held job is withdrawn: its planner would work on for no one (a never-ending
         // search of a dropped request); the slot frees when the planner lets go of it.
         if (auto holder = planners_.find(it->second.planner); holder != planners_.end()) {
-            holder->second.withdrawn.insert(id);
+            holder->second.withdrawn.emplace(id, 0);
             withdrawals_.push_back(it->second.message);
         }
         release(it->second);
@@ -274,7 +283,7 @@ std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
     std::vector<envdesign::job_t> out;
     bool contended = this->contended();
     while (!queue_.empty()) {
-        auto next = next_fair();
+        auto next = next_fair(contended, now);
         auto planner = pick_planner(jobs_.at(*next), contended, now);
         if (!planner && (next = kept_job(contended, now)) != queue_.end())
             planner = pick_planner(jobs_.at(*next), contended, now);
@@ -305,17 +314,6 @@ std::vector<envdesign::job_t> PlannerPool::assign(Clock::time_point now) {
     return out;
 }
 
-// The oldest queued job of a client a free slot is kept for (anticipate_s); end() if none.
-std::deque<std::int64_t>::iterator PlannerPool::kept_job(bool contended, Clock::time_point now) {
-    std::set<std::uint64_t> kept;
-    for (const auto &[name, planner] : planners_)
-        if (planner.kept_until > now && planner.free(contended))
-            kept.insert(planner.kept_for);
-    return std::find_if(queue_.begin(), queue_.end(), [&](std::int64_t id) {
-        return kept.count(client_of(jobs_.at(id).owner)) > 0;
-    });
-}
-
 void PlannerPool::set_client(std::uint64_t owner, std::uint64_t client) {
     std::lock_guard lock(mutex_);
     clients_[owner] = client;
@@ -324,78 +322,6 @@ void PlannerPool::set_client(std::uint64_t owner, std::uint64_t client) {
 std::uint64_t PlannerPool::client_of(std::uint64_t owner) const {
     auto it = clients_.find(owner);
     return it == clients_.end() ? owner : it->second;
-}
-
-FairShare::Held PlannerPool::held() const {
-    FairShare::Held held;
-    for (const auto &[id, record] : jobs_)
-        if (!record.planner.empty())
-            ++held[client_of(record.owner)];
-    return held;
-}
-
-std::deque<std::int64_t>::iterator PlannerPool::next_fair() {
-    std::vector<std::uint64_t> clients;
-    for (std::int64_t id : queue_)
-        clients.push_back(client_of(jobs_.at(id).owner));
-    return queue_.begin() + static_cast<std::ptrdiff_t>(fair_.next(clients, held()));
-}
-
-bool PlannerPool::contended() const {
-    std::optional<std::uint64_t> first;
-    for (const auto &[id, record] : jobs_) {
-        std::uint64_t client = client_of(record.owner);
-        if (first && *first != client)
-            return true;
-        first = client;
-    }
-    return false;
-}
-
-// No slot is free and jobs wait: withdraw the jobs that give the clients below their share
-// a slot each (fair_share.h). A withdrawn job's slot frees when its planner lets go of it,
-// so the withdrawals still pending count as slots on the way.
-void PlannerPool::withdraw_for_waiting(Clock::time_point now, bool contended) {
-    int slots = 0, pending = 0;
-    for (const auto &[name, planner] : planners_) {
-        slots += contended ? planner.workers : planner.slots;
-        pending += static_cast<int>(planner.withdrawn.size());
-    }
-    std::vector<std::uint64_t> clients;
-    for (std::int64_t id : queue_)
-        clients.push_back(client_of(jobs_.at(id).owner));
-    std::set<std::uint64_t> waiting(clients.begin(), clients.end());
-    while (pending < static_cast<int>(waiting.size())) {
-        std::vector<FairShare::Running> running;
-        for (const auto &[id, record] : jobs_)
-            if (!record.planner.empty())
-                running.push_back({id, client_of(record.owner),
-                                   std::chrono::duration<double>(now - record.sent).count(),
-                                   record.preemptions});
-        auto victim = fair_.victim(clients, running, held(), slots);
-        if (!victim)
-            return;
-        withdraw(*victim, now);
-        ++pending;
-    }
-}
-
-void PlannerPool::withdraw(std::int64_t id, Clock::time_point now) {
-    JobRecord &record = jobs_.at(id);
-    planners_.at(record.planner).withdrawn.insert(id);
-    ++record.preemptions;
-    ++counters_.withdrawn;
-    fair_.add_service(client_of(record.owner),
-                      std::chrono::duration<double>(now - record.sent).count());
-    withdrawals_.push_back(record.message);
-    requeue(id);
-    queue_.erase(std::find(queue_.begin(), queue_.end(), id));
-    queue_.push_back(id); // behind the waiting work it yielded to
-}
-
-std::vector<envdesign::job_t> PlannerPool::take_withdrawals() {
-    std::lock_guard lock(mutex_);
-    return std::exchange(withdrawals_, {});
 }
 
 // Round robin over planners with a free slot, preferring one that has not had this job;

@@ -6,10 +6,11 @@
 // Rules:
 //   - a job goes to a live planner with a free slot, round robin; with no free slot it
 //     waits in a queue and goes out as soon as a slot frees. The queue is fair between
-//     requests (fair_share.h): the request holding the fewest slots, then served least,
-//     goes first, and a request holding none gets one by withdrawing (take_withdrawals())
-//     the youngest job past its quantum of the request holding the most; the withdrawn
-//     job's slot stays taken until its planner lets go of it;
+//     clients (fair_share.h): the least used goes first, one below its share before a
+//     client not much lighter, and a waiting client gets its slots by withdrawing
+//     (take_withdrawals()) jobs of clients over their share or much heavier; the withdrawn
+//     job's slot stays taken until its planner lets go of it, then waits anticipate_s for
+//     the client it was withdrawn for;
 //   - a planner that has been silent for planner_timeout_s, or says it is stopping, is
 //     gone: its jobs are queued again (attempt + 1), preferably for another planner;
 //   - a job the planner's heartbeat does not list although it was sent lost_after_s before
@@ -61,6 +62,10 @@ struct PoolConfig {
     // moment after an answer, and without the wait each of them had to withdraw a job again
     // (a planner round trip; issue 21's flood made a 0.05 s request take 1 s).
     double anticipate_s = 0.05;
+    // A client's usage of the planners (planner-seconds) halves every usage_half_life_s; one
+    // that used less by more than usage_margin_s gets slots first (fair_share.h).
+    double usage_half_life_s = 10;
+    double usage_margin_s = 2;
 };
 
 struct PoolCounters {
@@ -140,8 +145,10 @@ private:
         double busy_seconds = 0;     // as its last heartbeat said (running jobs included)
         Clock::time_point busy_grew; // when that last grew
         bool working(Clock::time_point now) const;
-        std::set<std::int64_t> withdrawn; // taken for another request, not yet let go of
-        int workers = 1;                  // its capacity: jobs it runs at once
+        // Taken for another client (its slot is that client's once let go of; 0: a forgotten
+        // job's, no one's), not yet let go of.
+        std::map<std::int64_t, std::uint64_t> withdrawn;
+        int workers = 1; // its capacity: jobs it runs at once
         // A slot kept for this client's next job until then (anticipate_s).
         std::uint64_t kept_for = 0;
         Clock::time_point kept_until{};
@@ -154,12 +161,14 @@ private:
     };
 
     std::vector<envdesign::job_t> assign(Clock::time_point now);
-    FairShare::Held held() const;
+    FairShare::View fair_view(bool contended, Clock::time_point now) const;
     std::uint64_t client_of(std::uint64_t owner) const;
-    std::deque<std::int64_t>::iterator next_fair();
+    std::deque<std::int64_t>::iterator next_fair(bool contended, Clock::time_point now);
+    void keep_for(Planner &planner, std::uint64_t client, Clock::time_point now);
     std::deque<std::int64_t>::iterator kept_job(bool contended, Clock::time_point now);
     void withdraw_for_waiting(Clock::time_point now, bool contended);
-    void withdraw(std::int64_t job_id, Clock::time_point now);
+    void withdraw(std::int64_t job_id, std::uint64_t taker, Clock::time_point now);
+    void withdraw_queued(const std::string &planner);
     bool overdue(const JobRecord &record, Clock::time_point now) const;
     std::optional<std::string> pick_planner(const JobRecord &record, bool contended,
                                             Clock::time_point now);
@@ -185,7 +194,7 @@ private:
     std::map<std::int64_t, std::uint64_t> answered_;
     std::deque<std::int64_t> answered_order_;
     double longest_answer_s_ = 0;
-    FairShare fair_{config_.quantum_s};
+    FairShare fair_{config_.quantum_s, config_.usage_half_life_s, config_.usage_margin_s};
     std::map<std::uint64_t, std::uint64_t> clients_; // owner -> client (set_client)
     std::vector<envdesign::job_t> withdrawals_;
 };

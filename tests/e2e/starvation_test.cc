@@ -151,21 +151,25 @@ TEST_F(Starvation, APlannerStopsWithinASecondOfSigterm) {
 
 // The audit's flood: forty requests that never end (blind search, no time limit), from forty
 // client names in one process. On a keyed bus the process is the client (fair_share.h): the
-// flood shares the planners with a well-behaved client, whose request gets them within a
-// heartbeat and finishes within twice its quiet time; the planners' resident memory stays
-// under --job-memory-mb. Two sizes, three runs each, quiet then flooded: the restaurant
-// (0.04 s quiet, where one withdrawal round trip is most of the time) and blocksworld 14
-// (a few seconds of planner work: the share of the planners is what counts).
+// flood has used the planners far more lately than a well-behaved client, whose request
+// takes every planner it asks for at once and finishes within twice its quiet time; the
+// planners' resident memory stays under --job-memory-mb. Two sizes, three runs each (the
+// medians are compared), quiet then flooded: the restaurant (0.04 s quiet, where withdrawing
+// the flood's searches is most of the time) and blocksworld 14 (a few seconds of planner
+// work: the share of the planners is what counts). ENVDESIGN_FLOOD_LOGS=FILE writes the
+// services' logs there, at debug level (each job sent and answered, with times).
 TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     std::string key = (dir / "bus.key").string();
     std::ofstream(key) << "k1 " << std::string(64, '7') << "\n";
     fs::permissions(key, fs::perms::owner_read | fs::perms::owner_write);
     // Nothing remembered: every run of the restaurant plans (else the second is free).
-    LocalCluster cluster(0, {"--stored-evaluations", "0", "--log-level", "trace"}, key);
+    const char *logs = std::getenv("ENVDESIGN_FLOOD_LOGS");
+    const std::string level = logs ? "debug" : "info";
+    LocalCluster cluster(0, {"--stored-evaluations", "0", "--log-level", level}, key);
     std::vector<Process *> planners;
     for (int i = 0; i < 2; ++i)
-        planners.push_back(
-            &cluster.add_planner({"--job-memory-mb", "128", "--remembered-answers", "0", "--log-level", "debug"}));
+        planners.push_back(&cluster.add_planner(
+            {"--job-memory-mb", "128", "--remembered-answers", "0", "--log-level", level}));
     const std::string restaurant = source("examples/restaurant/c-two-tasks-t10.textproto");
     client::Options options;
     options.give_up_after_s = 60;
@@ -238,12 +242,13 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     print("restaurant", quiet_small, flooded_small);
     print("blocksworld 14", quiet_large, flooded_large);
     std::cout << "planner RSS at most " << most / 1024 << " MiB\n";
-    if (const char *path = std::getenv("ENVDESIGN_FLOOD_LOGS"))
-        std::ofstream(path) << cluster.logs();
-    // Loose bounds (the target is 2x): CI machines are loaded and the flood takes CPU too.
-    EXPECT_LT(median(flooded_small), std::max(2 * median(quiet_small), 1.0) + 2.0)
-        << cluster.logs();
-    EXPECT_LE(median(flooded_large), 3 * median(quiet_large)) << cluster.logs();
+    if (logs)
+        std::ofstream(logs) << cluster.logs();
+    // The restaurant's 0.04 s is within 2x only on a quiet machine: withdrawing the flood's
+    // searches takes their planners tens of milliseconds, and on a loaded one their bus
+    // threads hear of it late (docs/results/robustness.md); 0.5 s allows for that.
+    EXPECT_LT(median(flooded_small), 2 * median(quiet_small) + 0.5) << cluster.logs();
+    EXPECT_LE(median(flooded_large), 2 * median(quiet_large)) << cluster.logs();
     EXPECT_LT(most, 128 * 1024) << "KiB: the planner's resident memory passed --job-memory-mb";
 }
 
