@@ -74,12 +74,21 @@ for channel in REQUEST CANCEL PROGRESS RESULT SPEC JOB SPEC_NEED EVALUATION HEAR
 done
 
 echo "== 4. lcm-logplayer replays it"
-lcm-logger --lcm-url="$replay_url" -f "$work/replay.lcmlog" >"$work/logger2.out" 2>&1 &
+lcm-logger --lcm-url="$replay_url" --flush-interval=1 -f "$work/replay.lcmlog" >"$work/logger2.out" 2>&1 &
 logger=$!
 pids+=("$logger")
 sleep 0.5
+# At the speed recorded: five times as fast, the logger lost messages in 2 runs of 5 on a
+# busy machine (load 7), and the diff failed.
 lcm-logplayer --lcm-url="$replay_url" --speed=1 "$work/run.lcmlog"
-sleep 0.5
+# Recorded whole once the second log is as long as the first (the same events, each its
+# same size; this logger flushes every 1 ms), rather than after a fixed wait a busy machine
+# may outlast. Messages lost never get it there: after 10 s the diff says which.
+recorded_bytes=$(stat -c %s "$work/run.lcmlog")
+for _ in $(seq 100); do
+    [ "$(stat -c %s "$work/replay.lcmlog" 2>/dev/null || echo 0)" -ge "$recorded_bytes" ] && break
+    sleep 0.1
+done
 kill -INT "$logger"
 wait "$logger" || true
 check_log "$work/replay.lcmlog" >"$work/replayed.txt"

@@ -44,18 +44,24 @@ launcher=$here/time_command.sh
 command -v ccache >/dev/null && launcher="$launcher;$(command -v ccache)"
 export CMAKE_CXX_COMPILER_LAUNCHER=$launcher CMAKE_C_COMPILER_LAUNCHER=$launcher
 
-# step NAME COMMAND: runs COMMAND with bash, prints its wall and CPU seconds (children too).
+# step NAME COMMAND: runs COMMAND with bash, prints its wall and CPU seconds (children too)
+# and the machine's load: before, after, and the mean of one-minute load averages taken
+# every 10 s meanwhile (the other builds and tests that shared the cores).
 step() {
     local name=$1 command=$2 log="$work/$1.log"
-    local load_before start end cpu
+    local load_before start end cpu sampler
     load_before=$(cut -d' ' -f1 /proc/loadavg)
+    (while sleep 10; do cut -d' ' -f1 /proc/loadavg; done) >"$work/$name.load" &
+    sampler=$!
     start=$(date +%s.%N)
     /usr/bin/time -f '%U %S' -o "$work/$name.cpu" bash -c "$command" >"$log" 2>&1 ||
-        { echo "$name failed; the end of $log:"; tail -30 "$log"; exit 1; }
+        { kill $sampler; echo "$name failed; the end of $log:"; tail -30 "$log"; exit 1; }
     end=$(date +%s.%N)
+    kill $sampler
     cpu=$(awk '{print $1 + $2}' "$work/$name.cpu")
-    printf '%-6s %7.1f s wall %7.1f s CPU  (load %s before, %s after)\n' "$name" \
-        "$(echo "$end - $start" | bc)" "$cpu" "$load_before" "$(cut -d' ' -f1 /proc/loadavg)"
+    printf '%-6s %7.1f s wall %7.1f s CPU  (load %s before, %s after, %s mean)\n' "$name" \
+        "$(echo "$end - $start" | bc)" "$cpu" "$load_before" "$(cut -d' ' -f1 /proc/loadavg)" \
+        "$(awk '{s += $1} END {printf "%.1f", NR ? s / NR : 0}' "$work/$name.load")"
 }
 
 echo "clone of $(git rev-parse --short HEAD) in $work/envdesign, $(nproc) cores"
@@ -71,6 +77,11 @@ if [ $run_tests = 1 ]; then
     echo "tests: $tests"
     step tests "$tests"
     grep -E "tests passed|tests failed" "$work/tests.log" | tail -1
+    # ctest's part of it, and the tests that took longest (wall seconds, under this load).
+    grep -E "^Total Test time" "$work/tests.log" | sed 's/^/       ctest: /'
+    echo "slowest tests (wall s):"
+    sed -nE 's|^ *[0-9]+/[0-9]+ Test +#[0-9]+: ([^ ]+) [ .]*Passed +([0-9.]+) sec$|\2 \1|p' \
+        "$work/tests.log" | sort -rn | head -12 | sed 's/^/  /'
 fi
 
 echo "slowest compiles (wall s, CPU s, object):"
