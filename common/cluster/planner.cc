@@ -199,15 +199,22 @@ void Planner::on_withdraw(const envdesign::job_t &job) {
         }
         auto waiting = [&](const Pending &p) { return p.job.job_id == job.job_id; };
         auto parked = parked_.find(job.spec_hash);
-        if (std::erase_if(queue_, waiting) == 0 &&
-            (parked == parked_.end() || std::erase_if(parked->second, waiting) == 0)) {
-            withdrawn_.insert(job.job_id); // it waits for the same content's answer
+        auto same = followers_.find(job_content(job));
+        if (std::erase_if(queue_, waiting) > 0 ||
+            (parked != parked_.end() && std::erase_if(parked->second, waiting) > 0)) {
+            abandon(job); // a job waiting for its content's answer takes its place
+        } else if (same != followers_.end() &&
+                   std::erase_if(same->second, [&](const envdesign::job_t &follower) {
+                       return follower.job_id == job.job_id;
+                   }) > 0) {
+            held_.erase(job.job_id); // it waited for another job's answer
+        } else {
+            withdrawn_.insert(job.job_id);
             return;
         }
-        abandon(job);
     }
-    // Let go of it now, not a heartbeat period later: its slot went to a request that waits
-    // (issue 21's flood: 0.1 s of the restaurant's 0.2 s).
+    // Let go of it now, not a heartbeat period later: its slot went to a client that waits
+    // (issue 21's flood: forty requests of one spec wait for one another's answers here).
     heartbeat(false);
 }
 
@@ -327,6 +334,9 @@ void Planner::work() {
             queue_.pop_front();
             if (withdrawn_.erase(pending.job.job_id) || cancelled_) {
                 abandon(pending.job);
+                lock.unlock();
+                if (!stopping_)
+                    heartbeat(false); // let go: the coordinator frees its slot now
                 continue;
             }
             stop = std::make_shared<std::atomic<bool>>(false);
