@@ -1,5 +1,6 @@
 #include "design/design_search.h"
 
+#include "design/witness_learning.h"
 #include "design/witness_search.h"
 
 #include <algorithm>
@@ -278,13 +279,22 @@ DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
     // the exhaustive search (with its bounds, which do hold) stays exact.
     bool explaining = problem.weights.behaviour == RobotBehaviour::EXPLAINING;
     bool witness = options.method == SearchMethod::WITNESS && !options.relevant;
-    DesignResult result = witness && !explaining
+    std::optional<DesignResult> proven;
+    if (witness && explaining && witness::explaining_applies(problem, TouchIndex(problem), options))
+        proven = search_explaining_by_hitting_sets(problem, evaluator, options, progress);
+    DesignResult result = proven ? std::move(*proven)
+                          : witness && !explaining
                               ? search_witness(problem, evaluator, options, progress)
                               : Search(problem, evaluator, options, progress).run();
-    if (witness && explaining)
+    if (witness && explaining && !proven)
         result.notes.push_back("robot_behaviour EXPLAINING: the witness search does not apply "
                                "(explanations depend on every model difference); searched "
                                "exhaustively");
+    else if (proven)
+        result.notes.push_back("robot_behaviour EXPLAINING: no design is grown by its witnesses "
+                               "(explanations depend on every model difference); the hitting-set "
+                               "phase bounds explaining by the differences that must be told "
+                               "(docs/design-search.md)");
     if (options.ranking > 1 && !options.ranking_all)
         result.notes.push_back(RANKING_NOTE);
     return result;

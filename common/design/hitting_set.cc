@@ -224,7 +224,7 @@ double HittingSetMaster::add_fixed_floor(Program &program, const std::vector<Lev
 // A task whose floor falls when adding modifications are chosen: term T_t >= V(F_k, D_j)
 // (1 - u_(k+1) - y_(j+1)) for every floor level k and plan level j (hitting_set.h).
 void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vector<Level> &levels,
-                                         double cap) const {
+                                         double cap, int explains) const {
     std::vector<int> y = add_plan_levels(program, levels, std::vector<double>(levels.size(), 0.0));
     std::vector<double> floors{root_.floor[t]}; // F_0 > F_1 > ...
     for (const UseFloor &f : root_.lower_floors[t])
@@ -258,9 +258,42 @@ void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vec
                 cols.push_back(u[k + 1]), coefs.push_back(value);
             if (j < y.size())
                 cols.push_back(y[j]), coefs.push_back(value);
+            if (explains >= 0) // explaining instead: the other option's bound holds
+                cols.push_back(explains), coefs.push_back(value);
             program.row(cols, coefs, 'G', value);
         }
     }
+}
+
+// EXPLAINING (explanation_bound.h): binary z says the task explains, and returns it. Each
+// difference e_i of the empty design told costs H p x; every pooled plan cheaper than h_R
+// must be broken by the design or by one told: touching modifications + e_i over its
+// breaking differences >= z.
+int HittingSetMaster::add_explaining_option(Program &program, int t) const {
+    int explains = program.column(0.0);
+    const ExplanationBound &bound = *root_.explaining;
+    std::optional<double> robot_plan = bound.robot_plan_cost(t);
+    if (!robot_plan)
+        return explains; // nothing known: explaining may cost nothing above the constant
+    const ObjectiveWeights &w = problem_.weights;
+    double each = w.explanation_cost * discounted_horizon(w) * problem_.tasks[t].probability;
+    std::vector<int> told(bound.differences(t), -1);
+    for (const PooledPlan &plan : plans_.plans(t)) {
+        if (plan.cost >= *robot_plan)
+            break;
+        const ExplanationBound::Breakers &breakers = bound.breaking(t, plan);
+        std::vector<int> cols{explains};
+        std::vector<double> coefs{-1.0};
+        for (int m : breakers.modifications)
+            cols.push_back(m), coefs.push_back(1.0);
+        for (int i : breakers.differences) {
+            if (told[i] < 0)
+                told[i] = program.column(each);
+            cols.push_back(told[i]), coefs.push_back(1.0);
+        }
+        program.row(cols, coefs, 'G', 0.0);
+    }
+    return explains;
 }
 
 // A task whose robot floor c_R* falls when adding modifications are chosen: the constant
@@ -336,7 +369,9 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
         std::vector<Level> task_levels = levels(t);
         if (task_levels.empty())
             continue;
-        if (root_.lower_floors[t].empty())
+        if (root_.explaining)
+            add_falling_floor(program, t, task_levels, cap, add_explaining_option(program, t));
+        else if (root_.lower_floors[t].empty())
             offset += add_fixed_floor(program, task_levels, cap);
         else
             add_falling_floor(program, t, task_levels, cap);

@@ -34,6 +34,7 @@
 #include "design/configuration.h"
 #include "design/deadline.h"
 #include "design/design_problem.h"
+#include "design/explanation_bound.h"
 #include "design/task_evaluation.h"
 #include "design/witness_bound.h"
 
@@ -53,6 +54,9 @@ struct RootFacts {
     // Per task, the adding modifications that can bring c_R* to at most `cost`.
     std::vector<std::vector<UseFloor>> lower_robot_floors;
     std::vector<const TaskExplicability *> settled; // tasks no modification can change
+    // robot_behaviour EXPLAINING: the bound on the explaining option (explanation_bound.h);
+    // null otherwise. Each task's term is then the lesser of the two options' bounds.
+    const ExplanationBound *explaining = nullptr;
 };
 
 // An evaluated design and the designs that provably rank after it: every superset that
@@ -93,8 +97,9 @@ private:
     std::vector<Level> levels(int task) const;
     double level_value(int task, double floor, double human_optimum) const;
     double add_fixed_floor(Program &program, const std::vector<Level> &levels, double cap) const;
-    void add_falling_floor(Program &program, int task, const std::vector<Level> &levels,
-                           double cap) const;
+    void add_falling_floor(Program &program, int task, const std::vector<Level> &levels, double cap,
+                           int explains = -1) const;
+    int add_explaining_option(Program &program, int task) const;
     std::vector<int> add_plan_levels(Program &program, const std::vector<Level> &levels,
                                      const std::vector<double> &objective) const;
     void add_falling_robot_floor(Program &program, int task) const;

@@ -74,6 +74,12 @@ std::string where(const Edit &edit) {
     return l.file + ":" + std::to_string(l.line) + ":" + std::to_string(l.column);
 }
 
+std::string literal_key(Side side, bool negated, const std::string &atom) {
+    return kPrefix[side] + std::string(negated ? "-|" : "+|") + atom;
+}
+
+} // namespace
+
 // "(move c00 c10)" -> {"move", "c00", "c10"}
 std::vector<std::string> words_of(const std::string &step) {
     std::string inner = step;
@@ -98,12 +104,6 @@ std::string ground_atom(const pddl::Atom &atom, const pddl::Action &action,
     }
     return out + ")";
 }
-
-std::string literal_key(Side side, bool negated, const std::string &atom) {
-    return kPrefix[side] + std::string(negated ? "-|" : "+|") + atom;
-}
-
-} // namespace
 
 TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
     Uses uses[2];

@@ -53,6 +53,13 @@ struct ModificationClass {
     std::string why_not; // the first edit that is not restricting, for the result
 };
 
+// "(move c00 c10)" -> {"move", "c00", "c10"}
+std::vector<std::string> words_of(const std::string &step);
+
+// `atom` of `action`'s schema with its parameters bound to a step's `arguments` (words_of).
+std::string ground_atom(const pddl::Atom &atom, const pddl::Action &action,
+                        const std::vector<std::string> &arguments);
+
 // One TouchIndex serves one search (it memoizes, and is not thread-safe).
 // Ascending lists of the restricting modifications that touch an evaluation's witnesses.
 struct WitnessTouch {

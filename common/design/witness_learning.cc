@@ -93,6 +93,8 @@ void DesignLearner::probe_shortcuts() {
 
 Cone cone_of(const DesignProblem &problem, const SupersetBound &bound, const Configuration &design,
              const std::vector<Record> &records) {
+    if (problem.weights.behaviour == RobotBehaviour::EXPLAINING)
+        return Cone{design, std::nullopt}; // no lemma there: the design alone
     Cone cone{design, std::vector<int>{}};
     for (std::size_t t = 0; t < records.size() && cone.escapes; ++t) {
         if (problem.tasks[t].probability <= 0)
@@ -153,11 +155,24 @@ bool DesignLearner::only_adding_added_everywhere() const {
 bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
     bool behaviour = w.behaviour == RobotBehaviour::EXPLICABLE ||
-                     (is_cost_optimal(w.behaviour) && bound_.always().empty());
+                     (is_cost_optimal(w.behaviour) && bound_.always().empty()) ||
+                     explaining_applies(problem_, index_, options_);
     return options_.hitting_sets && behaviour && root_ && result_.best &&
            std::isfinite(result_.best->objective.value) && only_adding_added_everywhere() &&
            w.alpha >= 0 && w.beta >= 0 && w.kappa >= 0 && result_.baseline &&
            std::isfinite(result_.baseline->objective.value);
+}
+
+bool explaining_applies(const DesignProblem &problem, const TouchIndex &index,
+                        const DesignSearchOptions &options) {
+    if (problem.weights.behaviour != RobotBehaviour::EXPLAINING || !options.hitting_sets ||
+        options.ranking > 1)
+        return false;
+    for (int m = 0; m < index.size(); ++m)
+        if (!index.of(m).restricting || index.of(m).edits_robot ||
+            problem.weights.beta * problem.modifications[m].cost < 0)
+            return false;
+    return true;
 }
 
 // COST_OPTIMAL(_BEST_CASE), every modification restricting: per task, the modifications
@@ -212,10 +227,21 @@ std::optional<RootFacts> DesignLearner::root_facts() {
         facts.lower_floors = std::move(floors->below);
         facts.lower_robot_floors = std::move(floors->robot_below);
     }
+    bool explaining = problem_.weights.behaviour == RobotBehaviour::EXPLAINING;
     for (int t = 0; t < tasks_; ++t) {
         const Record &r = root_->tasks[t];
-        bool settled = r && r->touch.known && r->touch.all.empty() && facts.lower_floors[t].empty();
+        bool settled = !explaining && r && r->touch.known && r->touch.all.empty() &&
+                       facts.lower_floors[t].empty();
         facts.settled.push_back(settled ? &r->evaluation : nullptr);
+    }
+    if (explaining) {
+        try {
+            explaining_.emplace(problem_, index_, root_->tasks);
+        } catch (const pddl::ParseError &e) {
+            result_.notes.push_back(std::string("the hitting-set phase was not used: ") + e.what());
+            return std::nullopt;
+        }
+        facts.explaining = &*explaining_;
     }
     return facts;
 }
@@ -274,6 +300,8 @@ bool DesignLearner::prove_by_hitting_sets() {
 // The record of `task` under `design` from a smaller evaluated configuration, when every
 // modification added since is restricting and touches none of its witnesses.
 Record DesignLearner::inherited(const Configuration &design, int task) const {
+    if (problem_.weights.behaviour == RobotBehaviour::EXPLAINING)
+        return nullptr; // an explanation may change without a witness touched
     for (const auto &known : known_) {
         const Configuration &configuration = known.first; // a lambda below uses it: clang 14
         const Record &r = known.second[task];             // captures no structured binding

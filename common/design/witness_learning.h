@@ -30,6 +30,12 @@ void offer_cone_of(const DesignProblem &problem, const SupersetBound &bound,
                    const Configuration &design, const std::vector<Record> &records, int max_size,
                    Ranking &ranking);
 
+// robot_behaviour EXPLAINING: whether the hitting-set phase applies (explanation_bound.h):
+// every modification restricts, edits only the human's model and costs no less than
+// nothing, and at most one design is asked for.
+bool explaining_applies(const DesignProblem &problem, const TouchIndex &index,
+                        const DesignSearchOptions &options);
+
 class DesignLearner {
 public:
     // All must outlive the learner; `report` shows progress after each design.
@@ -82,6 +88,7 @@ private:
         known_;                    // evaluated here or in the search
     std::vector<Cone> considered_; // every design whose objective is known, and its cone
     void consider(const Configuration &design, const std::vector<Record> &records);
+    std::optional<ExplanationBound> explaining_; // EXPLAINING: built with the root facts
     double lower_bound_;
     bool limit_seen_ = false;
     long long designs_ = 0;

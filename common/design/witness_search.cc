@@ -69,7 +69,8 @@ public:
           ranking_(options.ranking, options.ranking_all ? Padding::LISTED : Padding::LEFT_OUT),
           learner_(problem, evaluator, options, index_, bound_, result_, ranking_,
                    [this] { report(); }),
-          tasks_(static_cast<int>(problem.tasks.size())) {
+          tasks_(static_cast<int>(problem.tasks.size())),
+          phase_only_(problem.weights.behaviour == RobotBehaviour::EXPLAINING) {
         note_added_everywhere();
         if (is_cost_optimal(problem.weights.behaviour))
             result_.notes.push_back(
@@ -134,8 +135,11 @@ public:
             evaluate(next_batch());
             if (!probed && result_.baseline) {
                 probed = true;
+                if (phase_only_)
+                    open_.clear(); // no growth by witnesses (EXPLAINING)
                 learner_.probe_shortcuts();
                 if (learner_.prove_by_hitting_sets()) {
+                    proven_ = true;
                     skip(static_cast<long long>(open_.size()));
                     open_.clear();
                     result_.notes.push_back("proven optimal by the hitting-set phase after " +
@@ -149,6 +153,8 @@ public:
         if (result_.limit_reached) {
             double least = std::min(open_.empty() ? INF : open_.top().bound, least_unfinished_);
             least = std::max(least, learner_.lower_bound()); // both hold for every design
+            if (phase_only_)                                 // the queue held the root alone
+                least = learner_.lower_bound();
             result_.gap = result_.best ? std::max(0.0, result_.best->objective.value - least) : INF;
         }
         if (options_.ranking > 0)
@@ -159,6 +165,9 @@ public:
         report();
         return std::move(result_);
     }
+
+    // The hitting-set phase proved the best design optimal.
+    bool proven() const { return proven_; }
 
 private:
     // The next configurations worth evaluating, least bound first.
@@ -417,6 +426,8 @@ private:
     Ranking ranking_; // the N best (options.ranking)
     witness::DesignLearner learner_;
     int tasks_;
+    bool phase_only_; // EXPLAINING: the root, the probes and the hitting-set phase alone
+    bool proven_ = false;
     int max_size_ = 0;
     OpenList open_;
     struct ConfigurationHash {
@@ -441,6 +452,17 @@ DesignResult search_witness(const DesignProblem &problem, Evaluator &evaluator,
                             const DesignSearchOptions &options,
                             const std::function<void(const SearchProgress &)> &progress) {
     return WitnessSearch(problem, evaluator, options, progress).run();
+}
+
+std::optional<DesignResult>
+search_explaining_by_hitting_sets(const DesignProblem &problem, Evaluator &evaluator,
+                                  const DesignSearchOptions &options,
+                                  const std::function<void(const SearchProgress &)> &progress) {
+    WitnessSearch search(problem, evaluator, options, progress);
+    DesignResult result = search.run();
+    if (search.proven() || options.deadline.expired())
+        return result;
+    return std::nullopt;
 }
 
 } // namespace envdesign::design

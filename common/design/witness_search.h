@@ -41,10 +41,23 @@
 
 #include "design/design_search.h"
 
+#include <optional>
+
 namespace envdesign::design {
 
 DesignResult search_witness(const DesignProblem &problem, Evaluator &evaluator,
                             const DesignSearchOptions &options,
                             const std::function<void(const SearchProgress &)> &progress);
+
+// robot_behaviour EXPLAINING, where explaining_applies (witness_learning.h): the witness lemma
+// does not hold (an explanation depends on every model difference), so no design is grown by
+// its witnesses; the empty design, the probes and the hitting-set phase, with its bound on
+// the explaining option (explanation_bound.h) and no cones, prove the answer alone. The
+// result when that proves it or the deadline passes (best_found, the phase's gap); nullopt
+// otherwise, and the caller searches exhaustively.
+std::optional<DesignResult>
+search_explaining_by_hitting_sets(const DesignProblem &problem, Evaluator &evaluator,
+                                  const DesignSearchOptions &options,
+                                  const std::function<void(const SearchProgress &)> &progress);
 
 } // namespace envdesign::design
