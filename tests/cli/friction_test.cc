@@ -19,7 +19,6 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-std::string data(const std::string &name) { return std::string(ENVDESIGN_TEST_DATA) + "/" + name; }
 std::string example(const std::string &name) {
     return std::string(ENVDESIGN_EXAMPLES) + "/restaurant/" + name;
 }

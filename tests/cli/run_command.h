@@ -10,6 +10,8 @@ namespace envdesign::testing {
 
 // tests/data; here once, as test files of a unity batch share their file-local names.
 inline const std::string DATA = ENVDESIGN_TEST_DATA;
+// A file under tests/data.
+inline std::string data(const std::string &name) { return DATA + "/" + name; }
 
 struct CommandResult {
     int exit_code = -1;

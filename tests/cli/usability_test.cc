@@ -24,8 +24,6 @@ namespace {
 
 using nlohmann::json;
 
-std::string data(const std::string &name) { return std::string(ENVDESIGN_TEST_DATA) + "/" + name; }
-
 // stdout alone, parsed as one JSON document.
 json stdout_json(const std::string &arguments, int expected_exit) {
     CommandResult r = run_envdesign(arguments, false);
