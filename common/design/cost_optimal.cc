@@ -4,6 +4,7 @@
 #include "design/optimal_plan_graph.h"
 #include "design/worst_case.h"
 #include "ground/grounder.h"
+#include "ground/simplify.h"
 
 #include <algorithm>
 #include <chrono>
@@ -90,6 +91,8 @@ TaskExplicability evaluate_cost_optimal(const ModelPair &models, const Objective
     } catch (const ground::GroundingStopped &) {
         return {};
     }
+    ground::remove_unread(robot_task);
+    ground::remove_unread(human_task);
     auto heuristic = heuristics::make_heuristic(planner.options().heuristic, robot_task);
     OptimalPlanGraph graph = optimal_plan_graph(robot_task, robot.cost, *heuristic, limits);
     if (graph.status == OptimalPlanGraph::Status::LIMIT)

@@ -77,6 +77,16 @@ void remove_always_true(GroundTask &task) {
     restrict(task, keep, std::vector<bool>(task.num_operators(), true));
 }
 
+void remove_unread(GroundTask &task) {
+    std::vector<bool> read(task.num_facts(), false);
+    for (FactId f : task.goal)
+        read[f] = true;
+    for (const auto &op : task.operators)
+        for (FactId f : op.pre)
+            read[f] = true;
+    restrict(task, read, std::vector<bool>(task.num_operators(), true));
+}
+
 void remove_irrelevant(GroundTask &task) {
     std::vector<bool> relevant(task.num_facts(), false), useful(task.num_operators(), false);
     for (FactId f : task.goal)

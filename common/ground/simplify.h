@@ -14,6 +14,12 @@ void remove_unreachable(GroundTask &task);
 // reachable state, so as preconditions and goals they say nothing (grid's open doors).
 void remove_always_true(GroundTask &task);
 
+// Drops facts that no precondition and no goal reads, and keeps every operator (one that
+// then changes nothing stays, as a step that leaves the state as it is). Whether a sequence
+// of operators is a plan, and what it costs, does not change; states that differed only in
+// such facts become one (design/optimal_plan_graph.h follows every plan of the task).
+void remove_unread(GroundTask &task);
+
 // Drops facts that no goal needs, directly or through the preconditions of an operator that
 // changes a needed fact, and the operators left without effects. Operators kept keep all
 // their preconditions, so a plan of the smaller task is a plan of the original.
