@@ -126,9 +126,10 @@ std::optional<std::set<int>> users(const Modification &modification, const Opera
     return out;
 }
 
-// One floor search's time: past it the floor of every plan of A stands in (weaker, still a
-// floor), so that one hard task does not keep the phase from every other.
-constexpr double FLOOR_SEARCH_SECONDS = 1.0;
+// One floor search's time: past it what the search proved stands in (the largest f it
+// expanded, or the floor of every plan of A: weaker, still a floor), so that one hard task
+// does not keep the phase from every other.
+constexpr double FLOOR_SEARCH_SECONDS = 0.25;
 
 // A task of A with at most this many states is explored whole once (search/state_space.h)
 // for every L(t, e) at once; a larger one gets a search per modification.
@@ -147,14 +148,17 @@ planning::PlannerOptions options_for(const Deadline &deadline, double cap_s = 0)
 }
 
 // The least primary cost of a plan of `task`: INF when there is none, nullopt when a limit
-// stopped the search.
+// stopped the search, with `proven` set to what it had proven by then (no plan costs less:
+// the largest f expanded, search/astar_search.h).
 std::optional<double> least_cost(const ground::GroundTask &task, const Deadline &deadline,
-                                 double cap_s = 0) {
+                                 double cap_s = 0, double *proven = nullptr) {
     planning::PlanReport report = planning::plan_task(task, options_for(deadline, cap_s));
     if (report.status == search::SearchStatus::SOLVED)
         return static_cast<double>(report.cost);
     if (report.status == search::SearchStatus::FAILED)
         return INF;
+    if (proven)
+        *proven = static_cast<double>(report.statistics.f_bound);
     return std::nullopt;
 }
 
@@ -166,10 +170,11 @@ public:
         task_.fact_names.push_back("(envdesign-used-addition)");
         task_.goal.push_back(used_);
     }
-    std::optional<double> least_cost_using(const std::set<int> &steps, const Deadline &deadline) {
+    std::optional<double> least_cost_using(const std::set<int> &steps, const Deadline &deadline,
+                                           double &proven) {
         for (int o : steps)
             task_.operators[o].add.push_back(used_); // the largest id: the list stays sorted
-        auto cost = least_cost(task_, deadline, FLOOR_SEARCH_SECONDS);
+        auto cost = least_cost(task_, deadline, FLOOR_SEARCH_SECONDS, &proven);
         for (int o : steps)
             task_.operators[o].add.pop_back();
         return cost;
@@ -272,6 +277,7 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
                 ++searches;
             }
             std::optional<double> found;
+            double proven = 0; // by a search its cap stopped
             if (through) {
                 found = INF;
                 for (int o : *steps)
@@ -279,14 +285,15 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
             } else {
                 if (!flagged)
                     flagged.emplace(task);
-                found = flagged->least_cost_using(*steps, deadline);
+                found = flagged->least_cost_using(*steps, deadline, proven);
                 ++searches;
             }
             if (!found && deadline.expired()) {
                 why = "a time limit stopped the floors of adding modifications";
                 return false;
             }
-            cost = found.value_or(*least); // a planner limit: the floor of every plan
+            // A planner limit: what the search proved, or the floor of every plan.
+            cost = found.value_or(std::max(*least, proven));
         }
         if (cost <= floor)
             below.push_back({e, cost});

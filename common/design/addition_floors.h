@@ -25,8 +25,9 @@
 // use e and required by the goal. Before searching, h^max of an operator's precondition
 // plus its cost bounds every plan that uses it from below: where that bound is above the
 // floor for each operator of e, e cannot lower it and no search is made. A search that
-// passes a second stops, and the least cost of any plan of A stands in for L(t, e): a
-// weaker floor, never a wrong one.
+// passes a second stops, and what it proved stands in for L(t, e): the largest f it expanded
+// (LM-cut is admissible, so no plan using e costs less), or the least cost of any plan of A
+// if that is more. A weaker floor, never a wrong one.
 
 #include "design/deadline.h"
 #include "design/design_problem.h"

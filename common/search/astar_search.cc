@@ -50,6 +50,7 @@ SearchStatus AStarSearch::step() {
         if (node.g + node.h > last_jump_f_) {
             last_jump_f_ = node.g + node.h;
             result_.stats.expanded_until_last_jump = result_.stats.expanded;
+            result_.stats.f_bound = std::max<long long>(result_.stats.f_bound, last_jump_f_);
         }
         ++result_.stats.expanded;
         registry_.unpack(id, current_);
@@ -70,6 +71,8 @@ SearchStatus AStarSearch::initialize() {
     int h = heuristic_.compute(view_of(current_));
     ++result_.stats.evaluated;
     result_.stats.initial_h = h;
+    if (h != heuristics::DEAD_END)
+        result_.stats.f_bound = h;
     if (h == heuristics::DEAD_END) {
         ++result_.stats.dead_ends;
         statuses_[id] = NodeStatus::DEAD_END;

@@ -61,6 +61,9 @@ struct SearchStatistics {
     long long registered_states = 0;
     std::size_t bytes_per_state = 0; // packed state size in the registry
     int initial_h = 0;
+    // The largest f = g + h expanded (at least the initial h): with an admissible heuristic
+    // no plan costs less, so a search a limit stopped still proves this much.
+    long long f_bound = 0;
     double search_seconds = 0;
 };
 

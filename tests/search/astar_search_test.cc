@@ -168,6 +168,30 @@ TEST(AStarSearch, StepwiseCounts) {
     EXPECT_EQ(search.step(), SearchStatus::SOLVED); // stays finished
 }
 
+// The largest f expanded never passes the optimal cost, with an admissible heuristic that
+// is not consistent either (LM-cut), and reaches it when the search ends: a search stopped at
+// any step proves f_bound.
+TEST(AStarSearch, FBoundIsALowerBoundAtEveryStep) {
+    ground::GroundTask task = grid_task(6, {2, 8, 14, 20, 26});
+    for (HeuristicKind kind : {HeuristicKind::BLIND, HeuristicKind::HMAX, HeuristicKind::LMCUT}) {
+        SCOPED_TRACE(static_cast<int>(kind));
+        long long optimal = astar(task, kind).cost;
+        auto h = heuristics::make_heuristic(kind, task);
+        AStarSearch search(task, *h);
+        long long previous = 0;
+        SearchStatus status;
+        while ((status = search.step()) == SearchStatus::IN_PROGRESS) {
+            long long bound = search.result().stats.f_bound;
+            EXPECT_LE(bound, optimal);
+            EXPECT_GE(bound, previous);
+            previous = bound;
+        }
+        ASSERT_EQ(status, SearchStatus::SOLVED);
+        EXPECT_EQ(search.result().stats.f_bound, optimal);
+        EXPECT_GE(search.result().stats.f_bound, search.result().stats.initial_h);
+    }
+}
+
 // 22 independent switches: 4 million states, far more than blind search can do in 0.2 s.
 ground::GroundTask switches_task(int n) {
     ground::GroundTask task = testing::make_task(n + 1);
