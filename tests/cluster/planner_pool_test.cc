@@ -290,6 +290,36 @@ TEST(PlannerPool, AnAnsweredSlotWaitsForItsClientsNextJob) {
     EXPECT_TRUE(pool.take_withdrawals().empty());
 }
 
+// Issue 21's flood on two planners: a client that has used nothing takes both, not only
+// its share of one. Each planner's running flood job and the one queued behind it (two jobs
+// per worker while no one else waits) are withdrawn, and the freed slots are the client's.
+TEST(PlannerPool, AMuchLighterClientTakesEveryPlannerItAsksFor) {
+    PoolConfig config{10.0, 0.3, 2};
+    config.job_deadline_s = 100;
+    PlannerPool pool(config);
+    auto now = Clock::now();
+    pool.heartbeat(beat("a", 1), now);
+    pool.heartbeat(beat("b", 1), now);
+    for (std::int64_t id = 1; id <= 6; ++id)
+        pool.submit(1, job(id), now);
+    auto at = now + 5s; // jobs 1 and 3 at a, 2 and 4 at b (two per worker), 5 and 6 queued
+    EXPECT_TRUE(pool.heartbeat(working("a", 1, {1, 3}, 5), at).empty());
+    EXPECT_TRUE(pool.heartbeat(working("b", 1, {2, 4}, 5), at).empty());
+    EXPECT_TRUE(pool.submit(2, job(7), at).empty());
+    EXPECT_TRUE(pool.submit(2, job(8), at).empty());
+    std::set<std::int64_t> withdrawn;
+    for (const auto &w : pool.take_withdrawals())
+        withdrawn.insert(w.job_id);
+    EXPECT_EQ(withdrawn, (std::set<std::int64_t>{1, 2, 3, 4}));
+    auto sent = pool.heartbeat(working("a", 1, {}, 5), at + 10ms);
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0].job_id, 7);
+    sent = pool.heartbeat(working("b", 1, {}, 5), at + 10ms);
+    ASSERT_EQ(sent.size(), 1u);
+    EXPECT_EQ(sent[0].job_id, 8);
+    EXPECT_TRUE(pool.take_withdrawals().empty());
+}
+
 // A planner whose heartbeats show it working keeps a job past the job deadline: a long
 // search is not run twice at once. Past the job's own time limit it is taken.
 TEST(PlannerPool, AWorkingPlannerKeepsItsJobUntilItsTimeLimit) {
