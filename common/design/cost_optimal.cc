@@ -91,6 +91,8 @@ TaskExplicability evaluate_cost_optimal(const ModelPair &models, const Objective
     } catch (const ground::GroundingStopped &) {
         return {};
     }
+    // Facts nothing reads only tell states apart that every plan treats alike (Blocksworld's
+    // from-table of a block no modification restricts doubled the graph's states).
     ground::remove_unread(robot_task);
     ground::remove_unread(human_task);
     auto heuristic = heuristics::make_heuristic(planner.options().heuristic, robot_task);

@@ -8,6 +8,7 @@ import math
 import os
 import platform
 import re
+import resource
 import statistics
 import subprocess
 import tempfile
@@ -40,6 +41,37 @@ def run_design(binary, spec, time_limit, extra=(), nice=10):
     result["wall"] = wall
     result["exit_code"] = proc.returncode
     return result
+
+
+def run_measured(binary, spec, time_limit, nice=10):
+    """run_design with "cpu" (user + system seconds of the process) and "load" (the 1-minute
+    load average as it started) added: on a shared machine the wall time mostly measures
+    the others."""
+    load = os.getloadavg()[0]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    result = run_design(binary, spec, time_limit, nice=nice)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    result["cpu"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    result["load"] = load
+    return result
+
+
+def target_line(label, runs, target_s=10):
+    """One sentence: how many of `runs` (dicts with status, wall, cpu, load) were proven
+    optimal, their median and max wall and CPU seconds against `target_s`, the load range."""
+    walls = [r["wall"] for r in runs]
+    cpus = [r["cpu"] for r in runs if "cpu" in r]
+    loads = [r["load"] for r in runs if "load" in r]
+    optimal = sum(r["status"] == "optimal" for r in runs)
+    text = (f"{label}: {optimal}/{len(runs)} proven optimal; wall median "
+            f"{fmt(quantile(walls, 0.5))} s, max {fmt(max(walls))} s "
+            f"({sum(w > target_s for w in walls)} over {target_s} s)")
+    if cpus:
+        text += (f"; CPU median {fmt(quantile(cpus, 0.5))} s, max {fmt(max(cpus))} s "
+                 f"({sum(c > target_s for c in cpus)} over {target_s} s)")
+    if loads:
+        text += f"; load average {fmt(min(loads), 1)} to {fmt(max(loads), 1)} as runs started"
+    return text + "."
 
 
 def derived_spec(spec, directory, **fields):
