@@ -6,7 +6,7 @@
 //     not evaluated yet, until none is left within reach of the best one.
 // Every design evaluated here is a real design, compared with the best as such.
 
-#include "design/design_search.h"
+#include "design/design_result.h"
 #include "design/hitting_set.h"
 #include "design/witness.h"
 #include "design/witness_bound.h"

@@ -39,7 +39,7 @@
 // the human's one while a known plan as cheap is still valid: the evaluator is asked only
 // for the other tasks, and the visit costs a touch test. docs/design-search.md has more.
 
-#include "design/design_search.h"
+#include "design/design_result.h"
 
 #include <optional>
 
