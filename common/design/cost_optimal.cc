@@ -5,6 +5,7 @@
 #include "design/worst_case.h"
 #include "ground/grounder.h"
 #include "ground/simplify.h"
+#include "heuristics/make_heuristic.h"
 
 #include <algorithm>
 #include <chrono>

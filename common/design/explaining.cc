@@ -11,14 +11,6 @@ namespace {
 
 double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
 
-// alpha * H * ie + extra + kappa * T * cost, infinite (not NaN) when any part is.
-double contribution(const ObjectiveWeights &w, double ie, double extra, double cost) {
-    if (std::isinf(ie) || std::isinf(cost))
-        return INF;
-    double value = w.alpha * discounted_horizon(w) * ie + extra + w.kappa * w.horizon * cost;
-    return std::isnan(value) ? INF : value;
-}
-
 // The explanation when the most explicable plan is itself optimal for both models: pi is
 // then an optimal plan of P_R that needs no explanation (E = {}), so no search is needed.
 std::optional<TaskExplanation> nothing_to_tell(const TaskExplicability &t, double robot_optimal,
@@ -30,21 +22,6 @@ std::optional<TaskExplanation> nothing_to_tell(const TaskExplicability &t, doubl
 }
 
 } // namespace
-
-BehaviourChoice choose_behaviour(const ObjectiveWeights &w, const TaskExplicability &t) {
-    BehaviourChoice act{t.status == ExplicabilityStatus::SOLVED, false, t.ie, t.robot_cost, 0};
-    if (w.behaviour != RobotBehaviour::EXPLAINING || !t.explanation || !t.explanation->found)
-        return act;
-    const TaskExplanation &x = *t.explanation;
-    double told = w.explanation_cost * static_cast<double>(x.differences.size());
-    BehaviourChoice explain{true, true, least_ie(w.distance), x.robot_optimal_cost, told};
-    double act_value = act.finite ? contribution(w, act.ie, 0, act.robot_cost) : INF;
-    double explain_value =
-        contribution(w, explain.ie, discounted_horizon(w) * told, explain.robot_cost);
-    if (std::isinf(explain_value))
-        return act;
-    return clearly_greater(act_value, explain_value) ? explain : act;
-}
 
 TaskExplicability evaluate_task_behaviour(const ModelPair &models, const ObjectiveWeights &w,
                                           PlanCache &planner, const Deadline &deadline) {

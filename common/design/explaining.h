@@ -16,26 +16,16 @@
 //   objective = alpha * f_T(E_D[IE']) + beta * C + kappa * T * E_D[c_R'] + f_T(E_D[x * |E'|])
 // where IE', c_R', |E'| are the chosen option's values (|E'| = 0 when acting explicably).
 // The choice does not depend on p_t, so evaluations keep both options and the objective
-// chooses (stored evaluations serve any weights and any distribution).
+// chooses (choose_behaviour, objective.h: stored evaluations serve any weights and any
+// distribution).
 
 #include "design/configuration.h"
 #include "design/deadline.h"
+#include "design/objective.h"
 #include "design/plan_cache.h"
 #include "design/task_evaluation.h"
 
 namespace envdesign::design {
-
-struct BehaviourChoice {
-    bool finite = false;     // the chosen option has a plan
-    bool explained = false;  // true: explain, false: act explicably
-    double ie = INF;         // the IE that counts
-    double robot_cost = INF; // c_R(pi), or c_R* when explained
-    double explanation = 0;  // x * |E| when explained, per repetition; else 0
-};
-
-// The option the robot takes in task `t` (SOLVED or INEXPLICABLE). Outside EXPLAINING, or
-// without an explanation, acting explicably.
-BehaviourChoice choose_behaviour(const ObjectiveWeights &weights, const TaskExplicability &t);
 
 // evaluate_explicability, and in EXPLAINING mode the robot's optimal plan and a minimal
 // explanation of it (t.explanation). LIMIT (an empty evaluation) if the deadline passed.

@@ -24,7 +24,9 @@
 // is a new set E does not hit (pi' is valid in P_H + E), so the loop ends. T(pi') empty: no
 // explanation exists.
 
-#include "design/minimal_explanation.h"
+#include "design/deadline.h"
+#include "design/explanation_search.h"
+#include "design/plan_cache.h"
 
 namespace envdesign::design {
 

@@ -78,14 +78,6 @@ std::optional<bool> plan_optimal_for_human(const ModelPair &told,
     return best.status == PlanStatus::SOLVED && best.cost == v.cost;
 }
 
-ModelPair told_models(const ModelPair &models, const std::vector<ModelDifference> &differences,
-                      const std::vector<int> &chosen) {
-    ModelPair told = models;
-    for (int i : chosen)
-        apply_difference(differences[i], models, told);
-    return told;
-}
-
 ExplanationSearch minimal_explanation(const ModelPair &models,
                                       const std::vector<std::string> &robot_plan,
                                       PlanCache &planner, const Deadline &deadline) {

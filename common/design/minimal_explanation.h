@@ -21,6 +21,7 @@
 
 #include "design/configuration.h"
 #include "design/deadline.h"
+#include "design/explanation_search.h"
 #include "design/model_differences.h"
 #include "design/plan_cache.h"
 
@@ -29,30 +30,11 @@
 
 namespace envdesign::design {
 
-enum class ExplanationStatus {
-    FOUND, // `chosen` is a minimal explanation
-    NONE,  // no subset of the differences makes pi_R optimal (or pi_R is not a plan of P_R)
-    LIMIT, // the deadline passed first
-};
-
-struct ExplanationSearch {
-    ExplanationStatus status = ExplanationStatus::LIMIT;
-    std::vector<ModelDifference> differences; // all candidates
-    std::vector<int> chosen;                  // indices into `differences`, ascending
-    long long subsets_tried = 0;
-    long long planner_checks = 0; // subsets on which pi_R was valid, so the planner ran
-    bool hitting_sets = false;    // found by explanation_hitting.h (all differences restricting)
-};
-
 // Whether pi_R is valid and optimal in the human's model of `told` (the planner decides the
 // optimum); nullopt when the deadline passed first.
 std::optional<bool> plan_optimal_for_human(const ModelPair &told,
                                            const std::vector<std::string> &robot_plan,
                                            PlanCache &planner, const Deadline &deadline);
-
-// The human's model of `models` with the differences `chosen` applied.
-ModelPair told_models(const ModelPair &models, const std::vector<ModelDifference> &differences,
-                      const std::vector<int> &chosen);
 
 // A minimal explanation of `robot_plan` (an optimal plan of models' P_R).
 ExplanationSearch minimal_explanation(const ModelPair &models,

@@ -241,4 +241,12 @@ void apply_difference(const ModelDifference &d, const ModelPair &models, ModelPa
     toggle(list, l, d.robot_has);
 }
 
+ModelPair told_models(const ModelPair &models, const std::vector<ModelDifference> &differences,
+                      const std::vector<int> &chosen) {
+    ModelPair told = models;
+    for (int i : chosen)
+        apply_difference(differences[i], models, told);
+    return told;
+}
+
 } // namespace envdesign::design

@@ -49,4 +49,8 @@ std::vector<ModelDifference> model_differences(const ModelPair &models, bool rel
 // schemas from `models` (the models the difference was computed from).
 void apply_difference(const ModelDifference &difference, const ModelPair &models, ModelPair &told);
 
+// The human's model of `models` with the differences `chosen` applied.
+ModelPair told_models(const ModelPair &models, const std::vector<ModelDifference> &differences,
+                      const std::vector<int> &chosen);
+
 } // namespace envdesign::design

@@ -1,7 +1,5 @@
 #include "design/objective.h"
 
-#include "design/explaining.h"
-
 #include <algorithm>
 #include <cmath>
 
@@ -9,6 +7,14 @@ namespace envdesign::design {
 namespace {
 
 double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
+
+// alpha * H * ie + extra + kappa * T * cost, infinite (not NaN) when any part is.
+double contribution(const ObjectiveWeights &w, double ie, double extra, double cost) {
+    if (std::isinf(ie) || std::isinf(cost))
+        return INF;
+    double value = w.alpha * discounted_horizon(w) * ie + extra + w.kappa * w.horizon * cost;
+    return std::isnan(value) ? INF : value;
+}
 
 double combine(const ObjectiveWeights &w, const ObjectiveTerms &t) {
     return w.alpha * t.inexplicability + w.beta * t.design_cost + w.kappa * t.robot_cost +
@@ -101,6 +107,21 @@ bool ranks_before(const RankedDesign &a, const RankedDesign &b) {
     if (!nearly_equal(a.design_cost, b.design_cost))
         return a.design_cost < b.design_cost;
     return a.configuration < b.configuration;
+}
+
+BehaviourChoice choose_behaviour(const ObjectiveWeights &w, const TaskExplicability &t) {
+    BehaviourChoice act{t.status == ExplicabilityStatus::SOLVED, false, t.ie, t.robot_cost, 0};
+    if (w.behaviour != RobotBehaviour::EXPLAINING || !t.explanation || !t.explanation->found)
+        return act;
+    const TaskExplanation &x = *t.explanation;
+    double told = w.explanation_cost * static_cast<double>(x.differences.size());
+    BehaviourChoice explain{true, true, least_ie(w.distance), x.robot_optimal_cost, told};
+    double act_value = act.finite ? contribution(w, act.ie, 0, act.robot_cost) : INF;
+    double explain_value =
+        contribution(w, explain.ie, discounted_horizon(w) * told, explain.robot_cost);
+    if (std::isinf(explain_value))
+        return act;
+    return clearly_greater(act_value, explain_value) ? explain : act;
 }
 
 } // namespace envdesign::design

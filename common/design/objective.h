@@ -13,11 +13,25 @@
 
 #include "design/configuration.h"
 #include "design/explicability.h"
+#include "design/task_evaluation.h"
 
 #include <optional>
 #include <vector>
 
 namespace envdesign::design {
+
+struct BehaviourChoice {
+    bool finite = false;     // the chosen option has a plan
+    bool explained = false;  // true: explain, false: act explicably
+    double ie = INF;         // the IE that counts
+    double robot_cost = INF; // c_R(pi), or c_R* when explained
+    double explanation = 0;  // x * |E| when explained, per repetition; else 0
+};
+
+// The option the robot takes in task `t` (SOLVED or INEXPLICABLE): with EXPLAINING the
+// cheaper of acting explicably and explaining (explaining.h; acting on a tie); otherwise, or
+// without an explanation, acting explicably.
+BehaviourChoice choose_behaviour(const ObjectiveWeights &weights, const TaskExplicability &t);
 
 struct ObjectiveTerms {
     double inexplicability = INF; // f_T(E[IE])

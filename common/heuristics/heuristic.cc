@@ -1,45 +1,11 @@
 #include "heuristics/heuristic.h"
 
-#include "heuristics/blind_heuristic.h"
-#include "heuristics/hmax_heuristic.h"
-#include "heuristics/lmcut_heuristic.h"
-
 #include <stdexcept>
 #include <string>
 
 namespace envdesign::heuristics {
 
 Heuristic::~Heuristic() = default;
-
-namespace {
-
-// Every operator needs at most one fact and the goal is one fact: the delete relaxation is
-// a shortest-path problem (a robot on a route graph), where h^max is h+ and LM-cut, lying
-// between them, equals both at every state. h^max costs a fraction per state.
-bool unary_with_one_goal(const ground::GroundTask &task) {
-    if (task.goal.size() != 1)
-        return false;
-    for (const auto &op : task.operators)
-        if (op.pre.size() > 1)
-            return false;
-    return true;
-}
-
-} // namespace
-
-std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const ground::GroundTask &task) {
-    switch (kind) {
-    case HeuristicKind::BLIND:
-        return std::make_unique<BlindHeuristic>(task);
-    case HeuristicKind::HMAX:
-        return std::make_unique<HMaxHeuristic>(task);
-    case HeuristicKind::LMCUT:
-        if (unary_with_one_goal(task)) // the same estimates, so the same search and plan
-            return std::make_unique<HMaxHeuristic>(task);
-        return std::make_unique<LmCutHeuristic>(task);
-    }
-    throw std::invalid_argument("unknown heuristic kind");
-}
 
 HeuristicKind parse_heuristic_kind(std::string_view name) {
     if (name == "lmcut")

@@ -7,7 +7,7 @@
 // goal is unreachable from the state (for the heuristics here: even in the delete
 // relaxation), so the search may prune it.
 //
-// Example:
+// Example (make_heuristic.h):
 //   auto h = make_heuristic(parse_heuristic_kind("lmcut"), task);
 //   int estimate = h->compute(view);   // view built by the search, see StateView
 //   if (estimate == DEAD_END) ...
@@ -51,11 +51,6 @@ public:
 };
 
 enum class HeuristicKind { BLIND, HMAX, LMCUT };
-
-// The heuristic keeps a reference to `task`, which must outlive it. LMCUT on a task whose
-// operators each need at most one fact and whose goal is one fact (a robot on a route graph)
-// is computed as h^max: there the two give the same estimate at every state, h^max cheaper.
-std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const ground::GroundTask &task);
 
 // "blind", "hmax" or "lmcut" (exact, lower case); throws std::invalid_argument otherwise.
 HeuristicKind parse_heuristic_kind(std::string_view name);

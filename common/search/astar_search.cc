@@ -1,4 +1,5 @@
 #include "search/astar_search.h"
+#include "heuristics/make_heuristic.h"
 
 #include <algorithm>
 #include <utility>

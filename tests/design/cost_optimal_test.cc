@@ -11,6 +11,7 @@
 #include "design/optimal_plan_graph.h"
 #include "design/worst_case.h"
 #include "ground/grounder.h"
+#include "heuristics/make_heuristic.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
 

@@ -3,6 +3,7 @@
 #include "heuristic_test_util.h"
 #include "heuristics/hmax_heuristic.h"
 #include "heuristics/lmcut_heuristic.h"
+#include "heuristics/make_heuristic.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
 #include "search/astar_search.h"
 
+#include "heuristics/make_heuristic.h"
 #include "search_test_util.h"
 
 #include <gtest/gtest.h>
