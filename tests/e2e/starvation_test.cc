@@ -219,11 +219,16 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     });
     std::this_thread::sleep_for(std::chrono::seconds(5)); // the flood holds every planner
     for (int run = 0; run < RUNS; ++run) {
+        // A request that failed (timed_design said so) leaves its JSON empty: nothing to compare
+        // (at() would throw past the sampler thread, and end the whole test program).
+        small = large = nlohmann::json();
         flooded_small.push_back(timed_design(restaurant, cluster, options, small));
-        expect_same_design(small, self_contained(restaurant));
+        if (!small.is_null())
+            expect_same_design(small, self_contained(restaurant));
         flooded_large.push_back(
             timed_design(fresh_blocksworld(dir, RUNS + run), cluster, options, large));
-        expect_same_design(large, want_large);
+        if (!large.is_null() && !want_large.is_null())
+            expect_same_design(large, want_large);
         std::this_thread::sleep_for(std::chrono::seconds(1)); // the flood takes the planners back
     }
     done = true;
