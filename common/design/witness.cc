@@ -292,7 +292,7 @@ WitnessTouch TouchIndex::touching(const Configuration &configuration, int task,
         explicable.insert(explicable.end(), touch.mods.begin(), touch.mods.end());
     }
     explicable.insert(explicable.end(), every_robot_witness_.begin(), every_robot_witness_.end());
-    out.explicable = restricting_only(std::move(explicable));
+    out.explicable = restricting_only(std::move(explicable), HUMAN);
     auto human = touching_human_plan(configuration, task, *evaluation.human_plan);
     out.known = out.known && human;
     if (human)
@@ -308,7 +308,7 @@ TouchIndex::touching_human_plan(const Configuration &configuration, int task,
     const PlanTouch &touch = plan_touch(HUMAN, configuration, task, plan);
     if (!touch.known)
         return std::nullopt;
-    return restricting_only(touch.mods);
+    return restricting_only(touch.mods, HUMAN);
 }
 
 std::optional<std::vector<int>>
@@ -317,18 +317,14 @@ TouchIndex::touching_robot_plan(const Configuration &configuration, int task,
     const PlanTouch &touch = plan_touch(ROBOT, configuration, task, plan);
     if (!touch.known)
         return std::nullopt;
-    std::vector<int> mods = touch.mods;
-    mods.insert(mods.end(), every_robot_witness_.begin(), every_robot_witness_.end());
-    std::sort(mods.begin(), mods.end());
-    mods.erase(std::unique(mods.begin(), mods.end()), mods.end());
-    std::erase_if(mods, [&](int m) { return !classes_[m].restricting; });
-    return mods;
+    return restricting_only(touch.mods, ROBOT);
 }
 
-// Sorted, unique, restricting, with the add_goal modifications of the human's model (they
-// touch every witness).
-std::vector<int> TouchIndex::restricting_only(std::vector<int> mods) const {
-    mods.insert(mods.end(), every_human_witness_.begin(), every_human_witness_.end());
+// Sorted, unique, restricting, with the add_goal modifications of `side`'s model (they
+// touch every witness there).
+std::vector<int> TouchIndex::restricting_only(std::vector<int> mods, int side) const {
+    const std::vector<int> &every = side == ROBOT ? every_robot_witness_ : every_human_witness_;
+    mods.insert(mods.end(), every.begin(), every.end());
     std::sort(mods.begin(), mods.end());
     mods.erase(std::unique(mods.begin(), mods.end()), mods.end());
     std::erase_if(mods, [&](int m) { return !classes_[m].restricting; });

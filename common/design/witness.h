@@ -110,7 +110,7 @@ private:
     const PlanTouch &plan_touch(int side, const Configuration &configuration, int task,
                                 const std::vector<std::string> &plan) const;
     void add_key(const std::string &key, std::vector<int> &out) const;
-    std::vector<int> restricting_only(std::vector<int> mods) const;
+    std::vector<int> restricting_only(std::vector<int> mods, int side) const;
 
     const DesignProblem &problem_;
     std::vector<std::vector<AddedLiteral>> added_[2]; // per side, per modification
