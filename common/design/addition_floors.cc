@@ -229,6 +229,59 @@ std::vector<double> cheapest_prefix(const ground::GroundTask &task) {
 
 namespace {
 
+// The least cost of a plan of a task of A through one of some operators, asked for one
+// modification after another: a small task is explored whole at the first question and
+// answers every later one; a larger one gets a flagged search per question.
+class ThroughSearch {
+public:
+    ThroughSearch(const ground::GroundTask &task, const Deadline &deadline, long long &searches)
+        : task_(task), deadline_(deadline), searches_(searches) {}
+
+    // nullopt when a limit stopped the search, with `proven` set to what it had proven.
+    std::optional<double> least_using(const std::set<int> &steps, double &proven) {
+        if (!explored_) {
+            explored_ = true;
+            through_ = search::least_cost_through_operators(task_, EXPLORED_STATES,
+                                                            [&] { return deadline_.expired(); });
+            ++searches_;
+        }
+        if (through_) {
+            double found = INF;
+            for (int o : steps)
+                found = std::min(found, (*through_)[o]);
+            return found;
+        }
+        if (!flagged_)
+            flagged_.emplace(task_);
+        std::optional<double> found = flagged_->least_cost_using(steps, deadline_, proven);
+        ++searches_;
+        return found;
+    }
+
+private:
+    const ground::GroundTask &task_;
+    const Deadline &deadline_;
+    long long &searches_;
+    bool explored_ = false;
+    std::optional<std::vector<double>> through_; // per operator, from the exploration
+    std::optional<FlaggedTask> flagged_;
+};
+
+// `domain` and `problem` grounded with every operator kept (every plan of A is a plan of the
+// ground task), and its operators indexed. False, with `why`, when they do not ground.
+bool ground_all(const pddl::Domain &domain, const pddl::Problem &problem, const Deadline &deadline,
+                ground::GroundTask &task, std::optional<OperatorIndex> &index, std::string &why) {
+    try {
+        task = ground::ground(
+            domain, problem, nullptr, [&] { return deadline.expired(); }, false);
+        index.emplace(domain, problem, task);
+    } catch (const std::exception &e) {
+        why = std::string("the design of every adding modification does not ground: ") + e.what();
+        return false;
+    }
+    return true;
+}
+
 // One model of A for one task: its floors for every modification in `adding`, kept where at
 // most `floor`. False, with `why`, when it does not ground or the deadline passes first.
 bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
@@ -237,14 +290,8 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
                   std::vector<UseFloor> &below, long long &searches, std::string &why) {
     ground::GroundTask task;
     std::optional<OperatorIndex> index;
-    try {
-        task = ground::ground(
-            domain, pddl_problem, nullptr, [&] { return deadline.expired(); }, false);
-        index.emplace(domain, pddl_problem, task);
-    } catch (const std::exception &e) {
-        why = std::string("the design of every adding modification does not ground: ") + e.what();
+    if (!ground_all(domain, pddl_problem, deadline, task, index, why))
         return false;
-    }
     // The least over every plan of A: a floor for every e; above `floor`, no adding
     // modification can lower it.
     auto least = least_cost(task, deadline);
@@ -256,9 +303,7 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
     if (*least > floor)
         return true;
     std::vector<double> prefix = cheapest_prefix(task);
-    std::optional<std::vector<double>> through; // per operator, from one exploration
-    bool explored = false;
-    std::optional<FlaggedTask> flagged;
+    ThroughSearch through(task, deadline, searches);
     for (int e : adding) {
         auto steps = users(problem.modifications[e], *index, naming);
         double cost = *least;
@@ -270,24 +315,8 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
                 cheapest = std::min(cheapest, prefix[o]);
             if (cheapest > floor)
                 continue;
-            if (!explored) {
-                explored = true;
-                through = search::least_cost_through_operators(task, EXPLORED_STATES,
-                                                               [&] { return deadline.expired(); });
-                ++searches;
-            }
-            std::optional<double> found;
             double proven = 0; // by a search its cap stopped
-            if (through) {
-                found = INF;
-                for (int o : *steps)
-                    found = std::min(*found, (*through)[o]);
-            } else {
-                if (!flagged)
-                    flagged.emplace(task);
-                found = flagged->least_cost_using(*steps, deadline, proven);
-                ++searches;
-            }
+            std::optional<double> found = through.least_using(*steps, proven);
             if (!found && deadline.expired()) {
                 why = "a time limit stopped the floors of adding modifications";
                 return false;

@@ -154,41 +154,71 @@ struct LaterMember {
     }
 };
 
-} // namespace
+using MemberQueue = std::priority_queue<Member, std::vector<Member>, LaterMember>;
 
-long long offer_cone(const DesignProblem &problem, const Configuration &design,
-                     const std::vector<const TaskExplicability *> &tasks,
-                     const std::vector<int> &free, int max_size, Ranking &ranking) {
-    const double beta = problem.weights.beta;
+// What adding `m` adds to a design's objective: beta * its cost.
+double cone_weight(const DesignProblem &problem, int m) {
+    return problem.weights.beta * problem.modifications[m].cost;
+}
+
+// The free modifications of non-negative weighted cost, cheapest first, then by index.
+std::vector<int> cheapest_first(const DesignProblem &problem, const std::vector<int> &free) {
     std::vector<int> order;
     for (int m : free)
-        if (beta * problem.modifications[m].cost >= 0) // always true for a cone (precondition)
+        if (cone_weight(problem, m) >= 0) // always true for a cone (precondition)
             order.push_back(m);
-    auto weight = [&](int m) { return beta * problem.modifications[m].cost; };
+    auto weight = [&](int m) { return cone_weight(problem, m); };
     std::sort(order.begin(), order.end(),
               [&](int a, int b) { return weight(a) != weight(b) ? weight(a) < weight(b) : a < b; });
-    int room =
-        max_size > 0 ? max_size - static_cast<int>(design.size()) : static_cast<int>(order.size());
-    if (order.empty() || room <= 0)
-        return 0;
-    if (ranking.padding() == Padding::LEFT_OUT) {
-        std::vector<int> ascending = order;
-        std::sort(ascending.begin(), ascending.end());
-        std::vector<double> weights;
-        for (int m : ascending)
-            weights.push_back(weight(m));
-        double cost = design_cost(problem, design);
-        ranking.add_cone({objective_lower_bound(problem, cost, tasks), cost, design}, ascending,
-                         weights, max_size);
-        return 0;
+    return order;
+}
+
+// With Padding::LEFT_OUT every member is padded: the cone is recorded whole, by its free
+// modifications ascending (`order`, cheapest first, is not).
+void record_cone(const DesignProblem &problem, const Configuration &design,
+                 const std::vector<const TaskExplicability *> &tasks, const std::vector<int> &order,
+                 int max_size, Ranking &ranking) {
+    std::vector<int> ascending = order;
+    std::sort(ascending.begin(), ascending.end());
+    std::vector<double> weights;
+    for (int m : ascending)
+        weights.push_back(cone_weight(problem, m));
+    double cost = design_cost(problem, design);
+    ranking.add_cone({objective_lower_bound(problem, cost, tasks), cost, design}, ascending,
+                     weights, max_size);
+}
+
+// A member's successors: it with the next position added (while it has fewer than `room`
+// picks), and it with its last position moved on.
+void push_successors(Member member, const DesignProblem &problem, const std::vector<int> &order,
+                     int room, MemberQueue &open) {
+    int last = member.picks.back();
+    if (last + 1 >= static_cast<int>(order.size()))
+        return;
+    if (static_cast<int>(member.picks.size()) < room) {
+        Member grown = member;
+        grown.picks.push_back(last + 1);
+        grown.weighted += cone_weight(problem, order[last + 1]);
+        open.push(std::move(grown));
     }
+    member.picks.back() = last + 1;
+    member.weighted = 0;
+    for (int p : member.picks)
+        member.weighted += cone_weight(problem, order[p]);
+    open.push(std::move(member));
+}
+
+// Offers the members of `design` + E, E picked from `order` (cheapest first) with at most
+// `room` modifications. Returns how many were offered.
+long long offer_members(const DesignProblem &problem, const Configuration &design,
+                        const std::vector<const TaskExplicability *> &tasks,
+                        const std::vector<int> &order, int room, Ranking &ranking) {
     // Every non-empty subset once: a member's successors add the next position, or move
     // its last one on. Neither is cheaper nor smaller, so a member that cannot enter has
     // no successor that can (the objective grows with beta * cost).
-    std::priority_queue<Member, std::vector<Member>, LaterMember> open;
-    open.push({weight(order[0]), {0}});
+    MemberQueue open;
+    open.push({cone_weight(problem, order[0]), {0}});
     long long offered = 0;
-    const int k = static_cast<int>(order.size());
     while (!open.empty()) {
         Member member = open.top();
         open.pop();
@@ -205,22 +235,26 @@ long long offer_cone(const DesignProblem &problem, const Configuration &design,
         }
         ranking.offer({value, cost, c});
         ++offered;
-        int last = member.picks.back();
-        if (last + 1 >= k)
-            continue;
-        if (static_cast<int>(member.picks.size()) < room) {
-            Member grown = member;
-            grown.picks.push_back(last + 1);
-            grown.weighted += weight(order[last + 1]);
-            open.push(std::move(grown));
-        }
-        member.picks.back() = last + 1;
-        member.weighted = 0;
-        for (int p : member.picks)
-            member.weighted += weight(order[p]);
-        open.push(std::move(member));
+        push_successors(std::move(member), problem, order, room, open);
     }
     return offered;
+}
+
+} // namespace
+
+long long offer_cone(const DesignProblem &problem, const Configuration &design,
+                     const std::vector<const TaskExplicability *> &tasks,
+                     const std::vector<int> &free, int max_size, Ranking &ranking) {
+    std::vector<int> order = cheapest_first(problem, free);
+    int room =
+        max_size > 0 ? max_size - static_cast<int>(design.size()) : static_cast<int>(order.size());
+    if (order.empty() || room <= 0)
+        return 0;
+    if (ranking.padding() == Padding::LEFT_OUT) {
+        record_cone(problem, design, tasks, order, max_size, ranking);
+        return 0;
+    }
+    return offer_members(problem, design, tasks, order, room, ranking);
 }
 
 } // namespace envdesign::design

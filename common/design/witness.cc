@@ -1,6 +1,7 @@
 #include "design/witness.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 #include <map>
@@ -78,6 +79,75 @@ std::string literal_key(Side side, bool negated, const std::string &atom) {
     return kPrefix[side] + std::string(negated ? "-|" : "+|") + atom;
 }
 
+// How each side's predicates are read: by its domain's preconditions, every task's goals and
+// the modifications' added preconditions and goals; which are fresh, and who mentions each.
+std::array<Uses, 2> predicate_uses(const DesignProblem &problem) {
+    std::array<Uses, 2> uses;
+    for (Side side : {ROBOT, HUMAN}) {
+        const pddl::Domain &domain = side == ROBOT ? problem.robot_domain : problem.human_domain;
+        for (const auto &action : domain.actions)
+            for (const auto &l : action.precondition)
+                uses[side].add(l);
+        for (const auto &task : problem.tasks)
+            for (const auto &l : (side == ROBOT ? task.robot_problem : task.human_problem).goal)
+                uses[side].add(l);
+    }
+    for (int i = 0; i < static_cast<int>(problem.modifications.size()); ++i) {
+        for (const auto &edit : problem.modifications[i].edits) {
+            for (Side side : sides(edit.model)) {
+                if (edit.kind != EditKind::REMOVE_ACTION)
+                    uses[side].mentioned_by[literal_of(edit.expression).predicate].insert(i);
+                if (edit.kind == EditKind::ADD_PRECONDITION || edit.kind == EditKind::ADD_GOAL) {
+                    SpecLiteral l = literal_of(edit.expression);
+                    (l.negated ? uses[side].negative : uses[side].positive).insert(l.predicate);
+                }
+                const pddl::Domain &base =
+                    side == ROBOT ? problem.robot_domain : problem.human_domain;
+                if (edit.kind == EditKind::ADD_PREDICATE && edit.expression.is_list &&
+                    !edit.expression.items.empty() &&
+                    !base.find_predicate(edit.expression.items[0].symbol))
+                    uses[side].fresh.insert(edit.expression.items[0].symbol);
+            }
+        }
+    }
+    return uses;
+}
+
+struct EditClass {
+    bool restricting = true;
+    bool adding = false; // only adds plans (the mirror of the restricting rules)
+};
+
+// One edit of a model whose predicates are read as `u` says, by witness.h's rules.
+EditClass classify_edit(const Edit &edit, const Uses &u) {
+    SpecLiteral l = literal_of(edit.expression);
+    bool fresh = u.private_fresh(l.predicate);
+    bool positive = u.positive.count(l.predicate), negative = u.negative.count(l.predicate);
+    switch (edit.kind) {
+    case EditKind::ADD_INIT:
+        return {fresh || !positive, !negative};
+    case EditKind::REMOVE_INIT:
+        return {fresh || !negative, !positive};
+    case EditKind::REMOVE_GOAL:
+    case EditKind::REMOVE_PRECONDITION:
+        return {false, true};
+    case EditKind::ADD_PREDICATE:
+        return {true, true};
+    case EditKind::ADD_EFFECT:
+    case EditKind::REMOVE_EFFECT: {
+        // Adding a delete or dropping an add leaves fewer atoms of the predicate in every
+        // state reached; the opposite leaves more.
+        bool fewer = l.negated == (edit.kind == EditKind::ADD_EFFECT);
+        return {fresh || (fewer ? !negative : !positive), fewer ? !positive : !negative};
+    }
+    case EditKind::ADD_GOAL:
+    case EditKind::ADD_PRECONDITION:
+    case EditKind::REMOVE_ACTION:
+        break;
+    }
+    return {};
+}
+
 } // namespace
 
 // "(move c00 c10)" -> {"move", "c00", "c10"}
@@ -106,99 +176,21 @@ std::string ground_atom(const pddl::Atom &atom, const pddl::Action &action,
 }
 
 TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
-    Uses uses[2];
-    for (Side side : {ROBOT, HUMAN}) {
-        const pddl::Domain &domain = side == ROBOT ? problem.robot_domain : problem.human_domain;
-        for (const auto &action : domain.actions)
-            for (const auto &l : action.precondition)
-                uses[side].add(l);
-        for (const auto &task : problem.tasks)
-            for (const auto &l : (side == ROBOT ? task.robot_problem : task.human_problem).goal)
-                uses[side].add(l);
-    }
-    for (int i = 0; i < static_cast<int>(problem.modifications.size()); ++i) {
-        for (const auto &edit : problem.modifications[i].edits) {
-            for (Side side : sides(edit.model)) {
-                if (edit.kind != EditKind::REMOVE_ACTION)
-                    uses[side].mentioned_by[literal_of(edit.expression).predicate].insert(i);
-                if (edit.kind == EditKind::ADD_PRECONDITION || edit.kind == EditKind::ADD_GOAL) {
-                    SpecLiteral l = literal_of(edit.expression);
-                    (l.negated ? uses[side].negative : uses[side].positive).insert(l.predicate);
-                }
-                const pddl::Domain &base =
-                    side == ROBOT ? problem.robot_domain : problem.human_domain;
-                if (edit.kind == EditKind::ADD_PREDICATE && edit.expression.is_list &&
-                    !edit.expression.items.empty() &&
-                    !base.find_predicate(edit.expression.items[0].symbol))
-                    uses[side].fresh.insert(edit.expression.items[0].symbol);
-            }
-        }
-    }
-
+    const std::array<Uses, 2> uses = predicate_uses(problem);
     for (int side : {ROBOT, HUMAN})
         added_[side].resize(problem.modifications.size());
     for (int i = 0; i < static_cast<int>(problem.modifications.size()); ++i) {
         ModificationClass c;
         for (const auto &edit : problem.modifications[i].edits) {
             for (Side side : sides(edit.model)) {
-                const Uses &u = uses[side];
-                SpecLiteral l = literal_of(edit.expression);
-                bool fresh = u.private_fresh(l.predicate);
-                bool restricting = true;
-                bool adding = false; // only adds plans (the mirror of the rules above)
-                std::string schema = kPrefix[side] + std::string("schema|") + edit.action;
-                switch (edit.kind) {
-                case EditKind::ADD_INIT:
-                    restricting = fresh || !u.positive.count(l.predicate);
-                    adding = !u.negative.count(l.predicate);
-                    by_key_[literal_key(side, true, l.atom)].push_back(i);
-                    break;
-                case EditKind::REMOVE_INIT:
-                    restricting = fresh || !u.negative.count(l.predicate);
-                    adding = !u.positive.count(l.predicate);
-                    by_key_[literal_key(side, false, l.atom)].push_back(i);
-                    break;
-                case EditKind::ADD_GOAL:
-                    (side == ROBOT ? every_robot_witness_ : every_human_witness_).push_back(i);
-                    added_[side][i].push_back({"", as_literal(edit.expression)});
-                    break;
-                case EditKind::REMOVE_GOAL:
-                case EditKind::REMOVE_PRECONDITION:
-                    restricting = false;
-                    adding = true;
-                    break;
-                case EditKind::ADD_PREDICATE:
-                    adding = true;
-                    break;
-                case EditKind::ADD_PRECONDITION:
-                    by_key_[schema].push_back(i);
-                    added_[side][i].push_back({edit.action, as_literal(edit.expression)});
-                    break;
-                case EditKind::ADD_EFFECT:
-                case EditKind::REMOVE_EFFECT: {
-                    // Adding a delete or dropping an add leaves fewer atoms of the predicate
-                    // in every state reached; the opposite leaves more.
-                    bool fewer = l.negated == (edit.kind == EditKind::ADD_EFFECT);
-                    restricting = fresh || (fewer ? !u.negative.count(l.predicate)
-                                                  : !u.positive.count(l.predicate));
-                    adding =
-                        fewer ? !u.positive.count(l.predicate) : !u.negative.count(l.predicate);
-                    by_key_[schema].push_back(i);
-                    break;
-                }
-                case EditKind::REMOVE_ACTION:
-                    by_key_[edit.expression.is_list
-                                ? kPrefix[side] + std::string("act|") + edit.expression.to_string()
-                                : kPrefix[side] + std::string("schema|") + edit.expression.symbol]
-                        .push_back(i);
-                    break;
-                }
+                EditClass e = classify_edit(edit, uses[side]);
+                index_edit(i, edit, side);
                 if (side == ROBOT && edit.kind != EditKind::ADD_PREDICATE)
                     c.edits_robot = true;
-                if (!restricting && side == ROBOT)
+                if (!e.restricting && side == ROBOT)
                     c.robot_restricting = false;
-                c.adding = c.adding && adding;
-                if (!restricting && c.restricting) {
+                c.adding = c.adding && e.adding;
+                if (!e.restricting && c.restricting) {
                     c.restricting = false;
                     c.why_not = edit_kind_name(edit.kind) + " " + edit.expression.to_string() +
                                 " (" + where(edit) + ")";
@@ -206,6 +198,39 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
             }
         }
         classes_.push_back(c);
+    }
+}
+
+void TouchIndex::index_edit(int modification, const Edit &edit, int side) {
+    const std::string prefix = kPrefix[side];
+    switch (edit.kind) {
+    case EditKind::ADD_INIT: // touches a plan that needs the atom absent
+    case EditKind::REMOVE_INIT:
+        by_key_[literal_key(Side(side), edit.kind == EditKind::ADD_INIT,
+                            literal_of(edit.expression).atom)]
+            .push_back(modification);
+        break;
+    case EditKind::ADD_GOAL:
+        (side == ROBOT ? every_robot_witness_ : every_human_witness_).push_back(modification);
+        added_[side][modification].push_back({"", as_literal(edit.expression)});
+        break;
+    case EditKind::ADD_PRECONDITION:
+        by_key_[prefix + "schema|" + edit.action].push_back(modification);
+        added_[side][modification].push_back({edit.action, as_literal(edit.expression)});
+        break;
+    case EditKind::ADD_EFFECT:
+    case EditKind::REMOVE_EFFECT:
+        by_key_[prefix + "schema|" + edit.action].push_back(modification);
+        break;
+    case EditKind::REMOVE_ACTION:
+        by_key_[edit.expression.is_list ? prefix + "act|" + edit.expression.to_string()
+                                        : prefix + "schema|" + edit.expression.symbol]
+            .push_back(modification);
+        break;
+    case EditKind::REMOVE_GOAL: // not restricting: restricting_only drops them anyway
+    case EditKind::REMOVE_PRECONDITION:
+    case EditKind::ADD_PREDICATE: // nothing a plan relies on
+        break;
     }
 }
 

@@ -110,6 +110,8 @@ private:
     const PlanTouch &plan_touch(int side, const Configuration &configuration, int task,
                                 const std::vector<std::string> &plan) const;
     void add_key(const std::string &key, std::vector<int> &out) const;
+    // Files `modification`'s edit of `side`'s model under the keys of what it changes.
+    void index_edit(int modification, const Edit &edit, int side);
     std::vector<int> restricting_only(std::vector<int> mods, int side) const;
 
     const DesignProblem &problem_;

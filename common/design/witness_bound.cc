@@ -5,6 +5,14 @@
 #include <iterator>
 
 namespace envdesign::design::witness {
+namespace {
+
+// Whether some of `mods` are not in `c`.
+bool any_outside(const std::vector<int> &mods, const Configuration &c) {
+    return std::any_of(mods.begin(), mods.end(), [&](int m) { return !contains(c, m); });
+}
+
+} // namespace
 
 bool contains(const std::vector<int> &sorted, int value) {
     return std::binary_search(sorted.begin(), sorted.end(), value);
@@ -105,8 +113,7 @@ double SupersetBound::operator()(const Node &node) const {
 }
 
 bool SupersetBound::always_outside(const Node &node) const {
-    return std::any_of(always_.begin(), always_.end(),
-                       [&](int m) { return !contains(node.configuration, m); });
+    return any_outside(always_, node.configuration);
 }
 
 // Every modification outside the node is restricting, of non-negative weighted cost: a
@@ -115,11 +122,20 @@ bool SupersetBound::always_outside(const Node &node) const {
 // above the k-th cheapest such plan, every cheaper one must be broken; the costs of the
 // modifications that do it are shared among the tasks they can change.
 double SupersetBound::restricted_bound(const Node &node) const {
+    scratch_.reset(tasks_, index_.size());
+    std::vector<const TaskExplicability *> settled = settled_or_pooled(node);
+    double total = objective_lower_bound(problem_, node.cost, settled, node.robot_bounds);
+    if (std::isinf(total))
+        return total;
+    return total + breaking_extra(node);
+}
+
+// Per task of positive probability: its evaluation if every modification touching it is in
+// the node (it holds in every superset); else, in scratch_, the known plans still valid and
+// cheaper than its floor, and per modification the number of tasks whose plans it breaks.
+std::vector<const TaskExplicability *> SupersetBound::settled_or_pooled(const Node &node) const {
     const Configuration &c = node.configuration;
-    const ObjectiveWeights &w = problem_.weights;
     Scratch &s = scratch_;
-    int n = index_.size();
-    s.reset(tasks_, n);
     std::vector<const TaskExplicability *> settled(tasks_, nullptr);
     for (int t = 0; t < tasks_; ++t) {
         if (problem_.tasks[t].probability <= 0)
@@ -142,17 +158,20 @@ double SupersetBound::restricted_bound(const Node &node) const {
                     s.stamp[m] = t, ++s.degree[m];
         }
     }
-    double total = objective_lower_bound(problem_, node.cost, settled, node.robot_bounds);
-    if (std::isinf(total))
-        return total;
-    // Any split of each modification's cost among the tasks whose plans it breaks gives
-    // a bound: start even, then give each cost to the tasks that used it (a few rounds;
-    // the best round counts).
-    auto cost = [&](int m) { return w.beta * problem_.modifications[m].cost; };
+    return settled;
+}
+
+// What breaking the pooled plans of settled_or_pooled adds to the bound. Any split of each
+// modification's cost among the tasks whose plans it breaks gives a bound: start even, then
+// give each cost to the tasks that used it (a few rounds; the best round counts).
+double SupersetBound::breaking_extra(const Node &node) const {
+    const ObjectiveWeights &w = problem_.weights;
+    Scratch &s = scratch_;
+    int n = index_.size();
     for (int t = 0; t < tasks_; ++t)
         for (const PooledPlan *plan : s.plans[t])
             for (int m : plan->breakers)
-                s.share[t * n + m] = cost(m) / s.degree[m];
+                s.share[t * n + m] = weighted_cost(m) / s.degree[m];
     double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
     double best_extra = 0;
     for (int round = 0; round < 4; ++round) {
@@ -176,10 +195,12 @@ double SupersetBound::restricted_bound(const Node &node) const {
             for (const PooledPlan *plan : s.plans[t])
                 for (int m : plan->breakers)
                     if (s.users[m] > 0)
-                        share[m] = s.mark[m] == round * tasks_ + t + 1 ? cost(m) / s.users[m] : 0.0;
+                        share[m] = s.mark[m] == round * tasks_ + t + 1
+                                       ? weighted_cost(m) / s.users[m]
+                                       : 0.0;
         }
     }
-    return total + best_extra;
+    return best_extra;
 }
 
 // The least IE term of one task over supersets, given the plans valid there (by cost)
@@ -237,65 +258,71 @@ bool SupersetBound::valid_in(const PooledPlan &plan, const Configuration &c) con
 // Some modification outside the node is added everywhere (not restricting, or of
 // negative cost): only what holds whatever those do.
 double SupersetBound::open_bound(const Node &node) const {
-    const Configuration &c = node.configuration;
-    const ObjectiveWeights &w = problem_.weights;
-    auto outside = [&](const std::vector<int> &mods) {
-        return std::any_of(mods.begin(), mods.end(), [&](int m) { return !contains(c, m); });
-    };
-    bool always_outside = outside(always_);
-    bool robot_monotone = !outside(robot_relaxing_);
     double negative = 0;
     for (int m : negative_)
-        if (!contains(c, m))
-            negative += w.beta * problem_.modifications[m].cost;
+        if (!contains(node.configuration, m))
+            negative += weighted_cost(m);
+    OpenTasks open = open_tasks(node, negative < 0);
+    double total = objective_lower_bound(problem_, node.cost, open.settled, open.robot_bounds);
+    if (std::isinf(total))
+        return total;
+    return with_open_shares(node, open, total + negative);
+}
 
-    // Per task: its value if it is settled for every superset, else its least value.
-    std::vector<const TaskExplicability *> settled(tasks_, nullptr);
-    std::vector<std::optional<double>> robot_bounds(tasks_);
-    std::vector<std::vector<int>> open_touching(tasks_);
-    std::vector<bool> shares(tasks_, false);
-    std::vector<int> degree(index_.size(), 0);
+// Per task: its value if it is settled for every superset, else its least value, and whether
+// the excess is bounded by a share of the costs of what touches it (none while a modification
+// of negative cost is outside: `lowered`).
+SupersetBound::OpenTasks SupersetBound::open_tasks(const Node &node, bool lowered) const {
+    const Configuration &c = node.configuration;
+    bool always_out = always_outside(node);
+    bool robot_monotone = !any_outside(robot_relaxing_, c);
+    OpenTasks open{std::vector<const TaskExplicability *>(tasks_, nullptr),
+                   std::vector<std::optional<double>>(tasks_),
+                   std::vector<std::vector<int>>(tasks_), std::vector<bool>(tasks_, false),
+                   std::vector<int>(index_.size(), 0)};
     for (int t = 0; t < tasks_; ++t) {
         if (robot_monotone)
-            robot_bounds[t] = node.robot_bounds[t];
+            open.robot_bounds[t] = node.robot_bounds[t];
         const Record &r = node.tasks[t];
         if (!r || !r->touch.known || problem_.tasks[t].probability <= 0)
             continue;
         for (int m : r->touch.all)
             if (!contains(c, m))
-                open_touching[t].push_back(m);
-        if (open_touching[t].empty() && !always_outside) {
-            settled[t] = &r->evaluation;
+                open.touching[t].push_back(m);
+        if (open.touching[t].empty() && !always_out) {
+            open.settled[t] = &r->evaluation;
             continue;
         }
-        if (r->evaluation.status != ExplicabilityStatus::SOLVED || negative < 0)
+        if (r->evaluation.status != ExplicabilityStatus::SOLVED || lowered)
             continue;
-        shares[t] = true;
-        for (int m : open_touching[t])
-            ++degree[m];
+        open.shares[t] = true;
+        for (int m : open.touching[t])
+            ++open.degree[m];
         for (int m : always_)
-            degree[m] += contains(c, m) ? 0 : 1;
+            open.degree[m] += contains(c, m) ? 0 : 1;
     }
-    double total = objective_lower_bound(problem_, node.cost, settled, robot_bounds);
-    if (std::isinf(total))
-        return total;
-    total += negative;
-    // Shared costs: a task keeps its value unless a modification touching it is added.
+    return open;
+}
+
+// `total` plus the shared costs: a task keeps its value unless a modification touching it is
+// added.
+double SupersetBound::with_open_shares(const Node &node, const OpenTasks &open,
+                                       double total) const {
+    const Configuration &c = node.configuration;
+    const ObjectiveWeights &w = problem_.weights;
     double horizon = discounted_horizon(w);
     double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
     for (int t = 0; t < tasks_; ++t) {
-        if (!shares[t])
+        if (!open.shares[t])
             continue;
         const TaskExplicability &e = node.tasks[t]->evaluation;
         double p = problem_.tasks[t].probability;
-        double robot_least = robot_bounds[t].value_or(0.0);
+        double robot_least = open.robot_bounds[t].value_or(0.0);
         double excess = w.alpha * horizon * p * (e.ie - least_ie) +
                         w.kappa * w.horizon * p * (e.robot_cost - robot_least);
         double share = INF;
-        auto consider = [&](int m) {
-            share = std::min(share, w.beta * problem_.modifications[m].cost / degree[m]);
-        };
-        for (int m : open_touching[t])
+        auto consider = [&](int m) { share = std::min(share, weighted_cost(m) / open.degree[m]); };
+        for (int m : open.touching[t])
             consider(m);
         for (int m : always_)
             if (!contains(c, m))

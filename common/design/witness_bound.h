@@ -79,8 +79,25 @@ public:
     bool always_outside(const Node &node) const;
 
 private:
+    // What open_bound knows of each task.
+    struct OpenTasks {
+        std::vector<const TaskExplicability *> settled;  // its value in every superset
+        std::vector<std::optional<double>> robot_bounds; // where c_R* only rises
+        std::vector<std::vector<int>> touching;          // the modifications outside that touch it
+        std::vector<bool> shares;                        // its excess is bounded by their costs
+        std::vector<int> degree;                         // per modification: the tasks sharing it
+    };
+
     double restricted_bound(const Node &node) const;
+    std::vector<const TaskExplicability *> settled_or_pooled(const Node &node) const;
+    double breaking_extra(const Node &node) const;
     double open_bound(const Node &node) const;
+    OpenTasks open_tasks(const Node &node, bool lowered) const;
+    double with_open_shares(const Node &node, const OpenTasks &open, double total) const;
+    // beta * the cost of modification `m`: what adding it adds to the objective.
+    double weighted_cost(int m) const {
+        return problem_.weights.beta * problem_.modifications[m].cost;
+    }
     double level_bound(const std::vector<const PooledPlan *> &plans, const double *share,
                        double floor, double weight, double least_ie, std::vector<int> &used) const;
     bool valid_in(const PooledPlan &plan, const Configuration &c) const;
