@@ -123,28 +123,58 @@ long long edit_store(const fs::path &file, const std::string &sql) {
 // of 1e308). Now every record carries a tag over its bytes and its values are checked when
 // read: a changed record is deleted, counted, and planned again.
 // A record's value: version, kind ('E' evaluation, 'B' bound), then for 'E' the status and
-// the IE as 8 little-endian bytes, for 'B' the bound.
-class StoreEdits : public DurableTest, public ::testing::WithParamInterface<const char *> {};
+// the IE as 8 little-endian bytes, for 'B' the bound. Each case sets every IE to one value
+// and every bound to another (hex of the 8 bytes).
+struct StoreEdit {
+    const char *name, *ie, *bound;
+};
+
+void PrintTo(const StoreEdit &e, std::ostream *out) { *out << e.name; }
+
+class StoreEdits : public DurableTest, public ::testing::WithParamInterface<StoreEdit> {};
+
+// The coordinator's count of the store's bad records in its status (`envdesign status
+// --json`): -1 if it has none, -2 if no coordinator was heard.
+long long bad_records_in_status(const std::string &url) {
+    int exit_code = -1;
+    std::string lines = command_output(
+        binary("envdesign") + " status --json --connect '" + url + "' --seconds 1.5", &exit_code);
+    std::istringstream in(lines);
+    for (std::string line; std::getline(in, line);) {
+        auto j = nlohmann::json::parse(line, nullptr, false);
+        if (j.is_discarded() || j.value("kind", "") != "coordinator")
+            continue;
+        for (const auto &drop : j.at("drops"))
+            if (drop.at("channel") == "store:evaluations.db" && drop.at("reason") == "bad-record")
+                return drop.at("count").get<long long>();
+        return -1;
+    }
+    return -2;
+}
 
 TEST_P(StoreEdits, AreDroppedAndCountedNeverUsed) {
     fs::path state = dir / "killed";
     LocalCluster cluster(1, {"--state-dir", state.string()});
     nlohmann::json want = CliRun(cluster.url(), source(RESTAURANT), dir, "first").result();
     ASSERT_EQ(want.at("status"), "optimal");
-    const std::string ie = GetParam();
+    EXPECT_EQ(bad_records_in_status(cluster.url()), -1); // nothing bad read yet
+    const StoreEdit &edit = GetParam();
     long long evaluations = -1, bounds = -1;
     cluster.restart_coordinator(SIGTERM, [&] {
         evaluations = edit_store(state / "evaluations.db",
-                                 "UPDATE records SET value = CAST(substr(value, 1, 3) || X'" + ie +
+                                 "UPDATE records SET value = CAST(substr(value, 1, 3) || X'" +
+                                     std::string(edit.ie) +
                                      "' || substr(value, 12) AS BLOB) WHERE "
                                      "hex(substr(value, 2, 1)) = '45'"); // 'E'
         bounds = edit_store(state / "evaluations.db",
-                            "UPDATE records SET value = CAST(substr(value, 1, 2) || "
-                            "X'A0C8EB85F3CCE17F' || substr(value, 11) AS BLOB) WHERE "
-                            "hex(substr(value, 2, 1)) = '42'"); // 'B', set to 1e308
+                            "UPDATE records SET value = CAST(substr(value, 1, 2) || X'" +
+                                std::string(edit.bound) +
+                                "' || substr(value, 11) AS BLOB) WHERE "
+                                "hex(substr(value, 2, 1)) = '42'"); // 'B'
     });
+    // The restaurant's search stores both kinds (14 of each): every case edits some of each.
     ASSERT_GT(evaluations, 0);
-    ASSERT_GE(bounds, 0); // the SQL ran; a store without bound records changes none
+    ASSERT_GT(bounds, 0);
     nlohmann::json repeat = CliRun(cluster.url(), source(RESTAURANT), dir, "after").result();
     expect_same_design(repeat, want);
     EXPECT_GT(repeat.at("cluster").at("jobs_sent"), 0); // planned again, not read
@@ -152,11 +182,15 @@ TEST_P(StoreEdits, AreDroppedAndCountedNeverUsed) {
     EXPECT_NE(cluster.logs().find("failed their check (tag or values) and were deleted"),
               std::string::npos)
         << cluster.logs();
+    // The same search reads every record it stored: each edited one is counted once.
+    EXPECT_EQ(bad_records_in_status(cluster.url()), evaluations + bounds) << cluster.logs();
 }
 
-INSTANTIATE_TEST_SUITE_P(Issue21, StoreEdits,
-                         ::testing::Values("000000000000F87F",   // NaN
-                                           "0000000000000000")); // 0
+INSTANTIATE_TEST_SUITE_P(
+    Issue21, StoreEdits,
+    ::testing::Values(StoreEdit{"IeNanBound1e308", "000000000000F87F", "A0C8EB85F3CCE17F"},
+                      StoreEdit{"IeZeroBoundNan", "0000000000000000", "000000000000F87F"},
+                      StoreEdit{"IeZeroBoundInf", "0000000000000000", "000000000000F07F"}));
 
 } // namespace
 } // namespace envdesign::e2e
