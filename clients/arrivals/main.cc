@@ -121,13 +121,16 @@ int main(int argc, char **argv) {
     app.add_option("--domain", f.domain, "DDS domain id")->check(CLI::Range(0, 230));
     app.add_option("--history", f.history, "arrivals kept per site for late bridges")
         ->check(CLI::PositiveNumber);
-    app.add_option("--wait-bridge", f.wait_bridge, "wait up to S seconds for a bridge first");
+    app.add_option("--wait-bridge", f.wait_bridge, "wait up to S seconds for a bridge first")
+        ->check(service::number_in(design::TIME_LIMIT_S));
     // A bridge that matched this writer a moment ago may still be discovering it; until it
     // has, it does not acknowledge, and Cyclone's wait for acknowledgements does not wait for
     // it. Staying a little serves it the history (TRANSIENT_LOCAL) once it has.
     app.add_option("--linger", f.linger, "stay S seconds after the last arrival")
+        ->check(service::number_in(design::TIME_LIMIT_S))
         ->capture_default_str();
-    app.add_option("--ack-timeout", f.ack_timeout, "seconds to wait for acknowledgements");
+    app.add_option("--ack-timeout", f.ack_timeout, "seconds to wait for acknowledgements")
+        ->check(service::number_in(design::TIME_LIMIT_S));
     try {
         app.parse(argc, argv);
         if (f.replay.empty() && f.task.empty())

@@ -4,6 +4,7 @@
 
 #include "floor/floor_draw.h"
 #include "floor/floor_error.h"
+#include "service/number_flag.h"
 
 #include <nlohmann/json.hpp>
 #include <spdlog/spdlog.h>
@@ -16,6 +17,12 @@
 namespace envdesign::cli {
 
 namespace {
+
+// Where `floor import` reads a floor: how far people see, in metres (a million: the whole
+// floor at once), and a candidate's cost per metre (at most what a modification may cost,
+// docs/numbers.md; the spec's reader checks each candidate's cost again).
+constexpr design::NumberRange SIGHT_M{0, 1e6};
+constexpr design::NumberRange COST_PER_M{0, design::MODIFICATION_COST.high};
 
 void add_import_flags(CLI::App &import, FloorFlags &f) {
     floor::ImportOptions &o = f.options;
@@ -37,23 +44,32 @@ void add_import_flags(CLI::App &import, FloorFlags &f) {
                       "whose occupied cells block sight lines");
     import.add_option("--zones", o.zones_json, "VDA 5050 zoneSet JSON of candidate zones");
     import.add_option("--sight", o.sight_m, "metres people see a straight move across")
+        ->check(service::number_in(SIGHT_M))
         ->capture_default_str();
     import.add_option("--tape-cost", o.candidates.tape_cost_per_m, "cost of tape per metre")
+        ->check(service::number_in(COST_PER_M))
         ->capture_default_str();
     import.add_option("--lane-cost", o.candidates.lane_cost_per_m, "cost of a new lane per metre")
+        ->check(service::number_in(COST_PER_M))
         ->capture_default_str();
     import.add_option("--candidates", f.candidates, "kinds of candidates: tape,lane,zones")
         ->delimiter(',')
         ->check(CLI::IsMember({"tape", "lane", "zones"}))
         ->capture_default_str();
     import.add_option("--alpha", o.weights.alpha, "weight of inexplicability")
+        ->check(service::number_in(design::WEIGHT))
         ->capture_default_str();
-    import.add_option("--beta", o.weights.beta, "weight of the design cost")->capture_default_str();
+    import.add_option("--beta", o.weights.beta, "weight of the design cost")
+        ->check(service::number_in(design::WEIGHT))
+        ->capture_default_str();
     import.add_option("--kappa", o.weights.kappa, "weight of the robot's cost")
+        ->check(service::number_in(design::WEIGHT))
         ->capture_default_str();
     import.add_option("--horizon", o.weights.horizon, "times the tasks are done")
+        ->check(service::number_in(design::HORIZON))
         ->capture_default_str();
     import.add_option("--gamma", o.weights.gamma, "discount over the horizon")
+        ->check(service::number_in(design::DISCOUNT))
         ->capture_default_str();
     import.add_flag("--json", f.json, "print the summary as JSON");
 }

@@ -16,6 +16,10 @@
 namespace envdesign::cli {
 namespace {
 
+// --memory-limit in MiB: up to 1e9 MiB (about 1 PB), whose bytes a size_t holds exactly
+// (docs/numbers.md); 0: no limit.
+constexpr design::NumberRange MEMORY_LIMIT_MIB{0, 1e9};
+
 std::string status_name(search::SearchStatus status) {
     switch (status) {
     case search::SearchStatus::SOLVED:
@@ -84,7 +88,7 @@ void add_plan_flags(CLI::App &command, PlanFlags &flags) {
     command.add_option("--time-limit", flags.time_limit_s, "seconds (0: none)")
         ->check(service::number_in(design::TIME_LIMIT_S));
     command.add_option("--memory-limit", flags.memory_limit_mb, "MiB (0: none)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(service::number_in(MEMORY_LIMIT_MIB));
     command.add_option("--plan-file", flags.plan_file, "also write the plan to this file");
     command.add_flag("--json", flags.json, "print a JSON result instead of the plan");
 }

@@ -17,6 +17,10 @@ namespace {
 
 using namespace envdesign;
 
+// --min-samples (effective samples) and --holdoff (arrivals): a count of evidence, at most a
+// million; more would wait forever (docs/numbers.md).
+constexpr design::NumberRange EVIDENCE{0, 1e6};
+
 struct Flags {
     std::vector<std::string> problems; // ID=SPEC
     std::string mode = "local", estimator = "window:200", heuristic = "lmcut";
@@ -47,8 +51,10 @@ void add_flags(CLI::App &app, Flags &f, bridge::BridgeConfig &c) {
         ->check(service::number_in({0.0, 1.0}))
         ->capture_default_str();
     app.add_option("--min-samples", drift.min_samples, "evidence needed before a request")
+        ->check(service::number_in(EVIDENCE))
         ->capture_default_str();
     app.add_option("--holdoff", drift.holdoff_arrivals, "arrivals between two requests")
+        ->check(service::number_in(EVIDENCE))
         ->capture_default_str();
     app.add_option("--answer-timeout", drift.answer_timeout_s, "seconds to wait for a design")
         ->check(service::number_in(service::POSITIVE_SECONDS))

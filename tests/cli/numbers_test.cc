@@ -155,5 +155,75 @@ TEST(NumberFlags, NanAndInfiniteTimeLimitsAreUsageErrors) {
     EXPECT_EQ(ok.exit_code, 0) << ok.out;
 }
 
+// A command line of `binary` (in the build's bin folder), all output kept.
+CommandResult run_binary(const std::string &binary, const std::string &arguments) {
+    std::string command = std::string(ENVDESIGN_BIN_DIR) + "/" + binary + " " + arguments + " 2>&1";
+    CommandResult result;
+    FILE *pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return result;
+    char buffer[4096];
+    while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe))
+        result.out.append(buffer, n);
+    int status = pclose(pipe);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+// `flag VALUE` after `arguments` exits 2 for NaN, inf, 1e30 and -1, naming the flag and the
+// range `range` ("[0, 1e+06]"): the value never reaches a cast or a deadline.
+void expect_bad_values(const std::string &binary, const std::string &arguments,
+                       const std::string &flag, const std::string &range) {
+    for (const char *value : {"nan", "inf", "1e30", "-1"}) {
+        CommandResult r = run_binary(binary, arguments + " " + flag + " " + value);
+        EXPECT_EQ(r.exit_code, 2) << binary << " " << flag << " " << value << "\n" << r.out;
+        EXPECT_NE(r.out.find(flag + ": must be a number in " + range), std::string::npos)
+            << flag << " " << value << "\n"
+            << r.out;
+    }
+}
+
+// `plan --memory-limit`: NaN and 1e30 passed NonNegativeNumber and became an undefined cast
+// to size_t; the top of the range still plans.
+TEST(NumberFlags, PlanMemoryLimitOutOfRangeIsAUsageError) {
+    std::string files = RESTAURANT + "/domain.pddl " + RESTAURANT + "/serve-g1.pddl";
+    expect_bad_values("envdesign", "plan " + files, "--memory-limit", "[0, 1e+09]");
+    CommandResult ok = run_envdesign("plan " + files + " --memory-limit 1e9");
+    EXPECT_EQ(ok.exit_code, 0) << ok.out;
+}
+
+TEST(NumberFlags, FloorImportNumbersOutOfRangeAreUsageErrors) {
+    fs::path out =
+        fs::temp_directory_path() / ("envdesign-floor-flags-" + std::to_string(getpid()));
+    std::string import = "floor import " + std::string(ENVDESIGN_EXAMPLES) +
+                         "/floor/warehouse.building.yaml -o " + out.string();
+    for (auto [flag, range] :
+         std::vector<std::pair<std::string, std::string>>{{"--sight", "[0, 1e+06]"},
+                                                          {"--tape-cost", "[0, 1e+09]"},
+                                                          {"--lane-cost", "[0, 1e+09]"},
+                                                          {"--alpha", "[0, 1e+06]"},
+                                                          {"--beta", "[0, 1e+06]"},
+                                                          {"--kappa", "[0, 1e+06]"},
+                                                          {"--horizon", "[1, 1e+09]"},
+                                                          {"--gamma", "[0, 1]"}})
+        expect_bad_values("envdesign", import, flag, range);
+    EXPECT_FALSE(fs::exists(out)); // nothing written
+    CommandResult ok = run_envdesign(import + " --alpha 1e6 --gamma 1 --sight 1e6");
+    EXPECT_EQ(ok.exit_code, 0) << ok.out;
+    fs::remove_all(out);
+}
+
+// The bridge and envdesign-arrivals (built with DDS only) check before they touch DDS.
+TEST(NumberFlags, BridgeAndArrivalsNumbersOutOfRangeAreUsageErrors) {
+    for (const char *binary : {"envdesign-bridge", "envdesign-arrivals"})
+        if (!fs::exists(std::string(ENVDESIGN_BIN_DIR) + "/" + binary))
+            GTEST_SKIP() << binary << " is not built (no DDS)";
+    std::string spec = RESTAURANT + "/c-two-tasks-t10.textproto";
+    for (const char *flag : {"--min-samples", "--holdoff"})
+        expect_bad_values("envdesign-bridge", "--problem r=" + spec, flag, "[0, 1e+06]");
+    for (const char *flag : {"--wait-bridge", "--linger", "--ack-timeout"})
+        expect_bad_values("envdesign-arrivals", "--task serve-g1 --count 1", flag, "[0, 1e+07]");
+}
+
 } // namespace
 } // namespace envdesign::testing
