@@ -115,8 +115,9 @@ void JobRouter::on_evaluation(const envdesign::evaluation_t &answer) {
 }
 
 void JobRouter::on_heartbeat(const envdesign::planner_heartbeat_t &beat) {
-    if (beat.sender.empty() || beat.capacity < 1 || beat.period_ms < 1) {
-        bus_.reject(bus::HEARTBEAT, "a heartbeat without sender, capacity or period");
+    if (auto why = heartbeat_problem(beat)) {
+        bus_.reject(bus::HEARTBEAT,
+                    "a heartbeat from '" + beat.sender.substr(0, 64) + "' not used: " + *why);
         return;
     }
     PlannerPool::Events events;

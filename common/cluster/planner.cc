@@ -9,6 +9,7 @@
 #include "pddl/parse_error.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace envdesign::cluster {
 
@@ -295,7 +296,7 @@ void Planner::heartbeat(bool stopping) {
     envdesign::planner_heartbeat_t beat{};
     beat.utime = bus::now_utime();
     beat.sender = config_.instance;
-    beat.period_ms = static_cast<std::int32_t>(config_.heartbeat_period_s * 1000);
+    beat.period_ms = static_cast<std::int32_t>(std::lround(config_.heartbeat_period_s * 1000));
     beat.capacity = static_cast<std::int16_t>(std::max(1, config_.workers));
     {
         std::lock_guard lock(mutex_);

@@ -3,9 +3,27 @@
 #include "bus/log.h"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <utility>
 
 namespace envdesign::cluster {
+
+std::optional<std::string> heartbeat_problem(const envdesign::planner_heartbeat_t &beat) {
+    if (beat.sender.empty())
+        return "no sender";
+    if (beat.capacity < 1)
+        return "capacity " + std::to_string(beat.capacity) + " is below 1";
+    design::NumberRange period_ms{HEARTBEAT_PERIOD_S.low * 1000, HEARTBEAT_PERIOD_S.high * 1000};
+    if (auto why = design::number_problem(beat.period_ms, period_ms))
+        return "period_ms " + *why;
+    if (!std::isfinite(beat.busy_seconds) || beat.busy_seconds < 0) {
+        std::ostringstream why;
+        why << "busy_seconds must be finite and at least 0 (got " << beat.busy_seconds << ")";
+        return why.str();
+    }
+    return std::nullopt;
+}
 
 std::vector<envdesign::job_t> PlannerPool::submit(std::uint64_t owner, envdesign::job_t job,
                                                   Clock::time_point now) {

@@ -30,6 +30,7 @@
 // Thread-safe.
 
 #include "cluster/fair_share.h"
+#include "design/numbers.h"
 #include "envdesign/job_t.hpp"
 #include "envdesign/planner_heartbeat_t.hpp"
 
@@ -44,6 +45,15 @@
 #include <vector>
 
 namespace envdesign::cluster {
+
+// A planner's heartbeat period (its --heartbeat; period_ms on the wire is this in ms):
+// from 1 ms to an hour (docs/numbers.md).
+inline constexpr design::NumberRange HEARTBEAT_PERIOD_S{1e-3, 3600};
+
+// Why a heartbeat from the wire must not be used: no sender, a capacity below 1, a period_ms
+// outside HEARTBEAT_PERIOD_S, a busy_seconds that is not finite or is negative (issue 21: a
+// NaN one froze the planner's "working" state). nullopt when it may be.
+std::optional<std::string> heartbeat_problem(const envdesign::planner_heartbeat_t &beat);
 
 struct PoolConfig {
     double planner_timeout_s = 1.0;

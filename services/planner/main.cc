@@ -1,6 +1,7 @@
 // envdesign-planner: evaluates candidate designs for coordinators (README.md).
 
 #include "cluster/planner.h"
+#include "cluster/planner_pool.h"
 #include "service/number_flag.h"
 #include "service_main.h"
 
@@ -17,7 +18,7 @@ int main(int argc, char **argv) {
         ->check(CLI::Range(1, 256))
         ->capture_default_str();
     app.add_option("--heartbeat", config.heartbeat_period_s, "seconds between heartbeats")
-        ->check(service::number_in(service::POSITIVE_SECONDS))
+        ->check(service::number_in(cluster::HEARTBEAT_PERIOD_S))
         ->capture_default_str();
     app.add_option("--max-specs", config.max_specs, "specs kept loaded")
         ->check(CLI::Range(1, 1000))

@@ -3,9 +3,17 @@
 
 #include "cluster/planner_pool.h"
 
+#include "bus/bus.h"
+#include "cluster/job_router.h"
+
 #include <gtest/gtest.h>
+#include <spdlog/sinks/null_sink.h>
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
+#include <thread>
 
 namespace envdesign::cluster {
 namespace {
@@ -342,6 +350,75 @@ TEST(PlannerPool, AWorkingPlannerKeepsItsJobUntilItsTimeLimit) {
     auto moved = pool.expire(now + 12500ms);
     ASSERT_EQ(moved.size(), 1u) << "past its 10 s limit and the 2 s grace";
     EXPECT_EQ(moved[0].planner, other);
+}
+
+// Issue 21: a heartbeat is numbers from the wire. One whose busy_seconds is NaN, infinite or
+// negative, or whose period_ms is 0 or beyond an hour, is dropped and counted by the
+// coordinator's router, never used: no planner joins by it, a known one keeps the capacity
+// its good heartbeats gave, and its "working" state still follows its good heartbeats (a
+// NaN busy time taken in made every later one look idle, and a long job was taken from
+// its planner at the job deadline).
+TEST(PlannerPool, HeartbeatsWithBadNumbersAreDroppedAndChangeNothing) {
+    bus::Bus bus("memq://", std::make_shared<spdlog::logger>(
+                                "pool-test", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    PoolConfig config;
+    config.planner_timeout_s = 30;
+    config.job_deadline_s = 0.05;
+    JobRouter router(bus, config, "coordinator");
+    router.on_heartbeat(beat("a", 1));
+    router.on_heartbeat(beat("b", 1));
+    ASSERT_EQ(router.pool().live_planners(), 2);
+    ASSERT_EQ(router.pool().capacity(), 4); // 2 planners x 1 worker x 2 jobs per worker
+    Inbox inbox;
+    std::uint64_t owner = router.open(inbox);
+    envdesign::job_t long_job = job(0);
+    long_job.time_limit_s = 60;
+    std::int64_t id = router.send(owner, long_job);
+    ASSERT_EQ(router.pool().jobs_in_flight(), 1);
+    std::string holder = router.pool().sent_to(id, "a") ? "a" : "b";
+    std::string other = holder == "a" ? "b" : "a";
+    router.on_heartbeat(working(holder, 1, {id}, 1));
+
+    std::vector<envdesign::planner_heartbeat_t> bad;
+    const double inf = std::numeric_limits<double>::infinity();
+    for (double busy : {std::nan(""), inf, -inf, -1.0})
+        for (const std::string &name : {holder, std::string("c")})
+            bad.push_back(working(name, 8, {id}, busy));
+    for (int period : {0, -200, 3'600'001, INT_MAX})
+        for (const std::string &name : {holder, std::string("c")}) {
+            bad.push_back(working(name, 8, {id}, 2));
+            bad.back().period_ms = period;
+        }
+    long long malformed = bus.malformed();
+    for (const auto &b : bad)
+        router.on_heartbeat(b);
+    EXPECT_EQ(bus.malformed() - malformed, static_cast<long long>(bad.size()));
+    EXPECT_EQ(router.pool().live_planners(), 2) << "c never joined";
+    EXPECT_EQ(router.pool().counters().planners_joined, 2);
+    EXPECT_EQ(router.pool().capacity(), 4) << "not 8 workers from a dropped heartbeat";
+
+    // A second on, the holder's busy time grows past its last good heartbeat's (1 s): it is
+    // working, and keeps its job past the 0.05 s job deadline.
+    std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+    router.on_heartbeat(working(holder, 1, {id}, 2));
+    router.on_heartbeat(beat(other, 1));
+    router.tick();
+    EXPECT_EQ(router.pool().counters().jobs_resent, 0) << "the job was taken from " << holder;
+    EXPECT_TRUE(router.pool().sent_to(id, holder));
+    EXPECT_FALSE(router.pool().sent_to(id, other));
+
+    // The ends of the range are heartbeats like any other.
+    auto slowest = beat("d", 1);
+    slowest.period_ms = 3'600'000;
+    auto fastest = working("e", 1, {}, 0);
+    fastest.period_ms = 1;
+    router.on_heartbeat(slowest);
+    router.on_heartbeat(fastest);
+    EXPECT_EQ(router.pool().live_planners(), 4);
+    EXPECT_FALSE(heartbeat_problem(slowest));
+    EXPECT_EQ(heartbeat_problem(working("f", 1, {}, std::nan(""))).value_or(""),
+              "busy_seconds must be finite and at least 0 (got nan)");
+    router.close(owner);
 }
 
 } // namespace
