@@ -138,7 +138,8 @@ Service open_service(const std::string &role, const CommonFlags &flags) {
 }
 
 std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
-                                      const std::function<void()> &check) {
+                                      const std::function<void()> &check,
+                                      const StartupCheck &startup) {
     std::vector<std::string> args(argv, argv + argc);
     SettingPlaces places;
     try {
@@ -170,7 +171,10 @@ std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
     }
     if (app.get_option("--check-config")->count() > 0) {
         std::string program = args[0].substr(args[0].rfind('/') + 1);
-        if (auto problem = startup_problem(app)) {
+        auto problem = startup_problem(app);
+        if (!problem && startup)
+            problem = startup();
+        if (problem) {
             std::cerr << program << ": " << *problem << std::endl;
             return 2;
         }

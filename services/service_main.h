@@ -36,12 +36,18 @@ struct Service {
 };
 Service open_service(const std::string &role, const CommonFlags &flags);
 
+// What a service's start-up would fail on beyond its flags (a spec that does not load, a
+// state directory that cannot be opened), for --check-config; nullopt when nothing.
+using StartupCheck = std::function<std::optional<std::string>()>;
+
 // Parses the command line, with the settings of --config FILE before it (flags given on the
 // command line win), then runs `check` (which may throw CLI::ParseError too). Returns
 // nothing to go on, or the exit code: 0 after --help or --check-config, 2 for bad flags
-// (CLI11's message) or a bad config file ("FILE:LINE:COL: error: ..." on stderr).
+// (CLI11's message), a bad config file ("FILE:LINE:COL: error: ..." on stderr), or, with
+// --check-config, what the LCM URL, the key file or `startup` finds.
 std::optional<int> parse_command_line(CLI::App &app, int argc, char **argv,
-                                      const std::function<void()> &check = {});
+                                      const std::function<void()> &check = {},
+                                      const StartupCheck &startup = {});
 
 // Opens the service as `role` and returns what `run` returns; an exception out of either is
 // reported as "envdesign-ROLE: ..." with exit code 1, a URL that is not LCM's or a key file

@@ -1,6 +1,9 @@
 #include "store/state_dir.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <unistd.h>
 
 namespace envdesign::store {
 
@@ -18,6 +21,26 @@ std::shared_ptr<RecordDb> open_state_file(const std::string &dir, const RecordDb
              db->path(), report.records, report.created ? ", a new file" : "",
              report.check_seconds);
     return db;
+}
+
+std::optional<std::string> state_dir_problem(const std::string &dir) {
+    namespace fs = std::filesystem;
+    if (dir.empty())
+        return std::nullopt;
+    std::error_code error;
+    if (!fs::is_directory(dir, error))
+        return dir + " is not a directory";
+    if (access(dir.c_str(), W_OK | X_OK) != 0)
+        return "cannot write in " + dir + ": " + std::strerror(errno);
+    fs::path file = fs::path(dir) / "evaluations.db";
+    fs::file_status status = fs::status(file, error);
+    if (!fs::exists(status))
+        return std::nullopt; // created at start
+    if (!fs::is_regular_file(status))
+        return file.string() + " is not a regular file";
+    if (access(file.c_str(), R_OK | W_OK) != 0)
+        return "cannot read and write " + file.string() + ": " + std::strerror(errno);
+    return std::nullopt;
 }
 
 } // namespace envdesign::store

@@ -8,6 +8,7 @@
 #include <spdlog/logger.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace envdesign::store {
@@ -16,5 +17,11 @@ namespace envdesign::store {
 // as an error (it was set aside). Throws StoreError (e.g. DIR does not exist).
 std::shared_ptr<RecordDb> open_state_file(const std::string &dir, const RecordDbOptions &options,
                                           spdlog::logger &log);
+
+// Why open_state_file(dir) could not open DIR/evaluations.db (DIR not a directory this
+// process may write in, the file not a regular file it may read and write), found without
+// opening, creating or setting aside anything (--check-config); nullopt when it could, or
+// when `dir` is empty.
+std::optional<std::string> state_dir_problem(const std::string &dir);
 
 } // namespace envdesign::store

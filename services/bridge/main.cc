@@ -7,6 +7,7 @@
 #include "pddl/parse_error.h"
 #include "service/number_flag.h"
 #include "service_main.h"
+#include "spec/design_spec.h"
 #include "store/state_dir.h"
 
 #include <envdesign/version.h>
@@ -133,6 +134,21 @@ void finish_config(const Flags &f, bridge::BridgeConfig &c) {
     c.coordinator.time_limit_s = c.local.time_limit_s;
 }
 
+// What start-up would fail on (--check-config): a --problem spec that does not load, a
+// --state-dir that cannot be opened.
+std::optional<std::string> bridge_startup_problem(const Flags &f, const bridge::BridgeConfig &c) {
+    for (const auto &source : c.problems) {
+        try {
+            spec::load_design_problem(source.spec_path);
+        } catch (const pddl::ParseError &e) {
+            return "--problem " + source.id + ": " + e.what();
+        }
+    }
+    if (auto why = store::state_dir_problem(f.state_dir))
+        return "--state-dir: " + *why;
+    return std::nullopt;
+}
+
 // The bridge's part of its status: re-evaluations awaited, and every arrival its intake
 // rejected, by verdict.
 void fill_status(const bridge::BridgeStats &stats, envdesign::service_status_t &status) {
@@ -155,8 +171,9 @@ int main(int argc, char **argv) {
     Flags flags;
     bridge::BridgeConfig config;
     add_flags(app, flags, config);
-    if (auto code =
-            services::parse_command_line(app, argc, argv, [&] { finish_config(flags, config); }))
+    if (auto code = services::parse_command_line(
+            app, argc, argv, [&] { finish_config(flags, config); },
+            [&] { return bridge_startup_problem(flags, config); }))
         return *code;
     return services::serve("bridge", common, [&](services::Service &service) {
         config.instance = service.instance;

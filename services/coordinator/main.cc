@@ -3,6 +3,7 @@
 #include "cluster/coordinator.h"
 #include "service/number_flag.h"
 #include "service_main.h"
+#include "store/state_dir.h"
 
 #include <envdesign/version.h>
 
@@ -81,7 +82,12 @@ int main(int argc, char **argv) {
                    "the request is dropped (clients send one every 2 s)")
         ->check(service::number_in({3, design::TIME_LIMIT_S.high}))
         ->capture_default_str();
-    if (auto code = services::parse_command_line(app, argc, argv))
+    auto startup = [&]() -> std::optional<std::string> {
+        if (auto why = store::state_dir_problem(config.state_dir))
+            return "--state-dir: " + *why;
+        return std::nullopt;
+    };
+    if (auto code = services::parse_command_line(app, argc, argv, {}, startup))
         return *code;
     config.state_max_bytes = state_max_mb << 20;
     return services::serve("coordinator", common, [&](services::Service &service) {
