@@ -3,6 +3,8 @@
 #include "design/explicability.h"
 #include "validate/plan_validator.h"
 
+#include <algorithm>
+#include <cctype>
 #include <functional>
 #include <set>
 
@@ -44,8 +46,67 @@ bool restricting(const ModelDifference &d, const std::set<std::string> &negative
 
 bool valid_with(const ModelPair &models, const ExplanationSearch &search, int d,
                 const std::vector<std::string> &plan) {
-    ModelPair told = told_models(models, search.differences, {d});
+    ModelPair told; // the human's side alone: the validator reads nothing else
+    told.human_domain = models.human_domain;
+    told.human_problem = models.human_problem;
+    apply_difference(search.differences[d], models, told);
     return validate::validate_plan(told.human_domain, told.human_problem, plan).valid;
+}
+
+// What a plan of P_H reads: the schemas of its steps, and the ground atoms their
+// preconditions and the goal read. A restricting difference about neither cannot break the
+// plan alone (it reads nothing negatively, and effects are unconditional: removing an
+// initial atom no step reads changes no step), so the validator is asked only about the
+// others. `known` false: a step did not match a schema; every difference is checked.
+struct PlanReads {
+    bool known = false;
+    std::set<std::string> schemas;
+    std::set<pddl::Atom> atoms;
+};
+
+PlanReads plan_reads(const ModelPair &models, const std::vector<std::string> &plan) {
+    PlanReads reads;
+    for (const auto &step : plan) {
+        std::vector<std::string> words;
+        std::string word;
+        for (char c : step) {
+            bool separator = c == '(' || c == ')' || std::isspace(static_cast<unsigned char>(c));
+            if (!separator)
+                word += c;
+            else if (!word.empty())
+                words.push_back(std::move(word)), word.clear();
+        }
+        if (!word.empty())
+            words.push_back(std::move(word));
+        const pddl::Action *action =
+            words.empty() ? nullptr : models.human_domain.find_action(words[0]);
+        if (!action || action->parameters.size() + 1 != words.size())
+            return {};
+        reads.schemas.insert(action->name);
+        for (const auto &l : action->precondition) {
+            pddl::Atom ground{l.atom.predicate, {}, {}};
+            for (const auto &arg : l.atom.args) {
+                auto it = std::find_if(action->parameters.begin(), action->parameters.end(),
+                                       [&](const pddl::TypedName &p) { return p.name == arg; });
+                ground.args.push_back(it == action->parameters.end()
+                                          ? arg
+                                          : words[1 + (it - action->parameters.begin())]);
+            }
+            reads.atoms.insert(std::move(ground));
+        }
+    }
+    for (const auto &l : models.human_problem.goal)
+        reads.atoms.insert(l.atom);
+    reads.known = true;
+    return reads;
+}
+
+bool may_break(const ModelDifference &d, const PlanReads &reads) {
+    if (!reads.known || d.kind == DifferenceKind::GOAL)
+        return true;
+    if (d.kind == DifferenceKind::INIT)
+        return reads.atoms.count(d.literal.atom) > 0;
+    return reads.schemas.count(d.action) > 0; // a schema's precondition, effect, or itself
 }
 
 } // namespace
@@ -91,8 +152,11 @@ std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, in
                 open = &s;
         }
         if (!open) {
-            if (!found || chosen.size() < best.size()) {
-                best = chosen;
+            std::vector<int> sorted = chosen;
+            std::sort(sorted.begin(), sorted.end());
+            if (!found || sorted.size() < best.size() ||
+                (sorted.size() == best.size() && sorted < best)) {
+                best = std::move(sorted);
                 found = true;
             }
             return;
@@ -108,23 +172,66 @@ std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, in
     if (sets.empty())
         return {};
     branch();
-    std::sort(best.begin(), best.end());
     return best;
 }
+
+namespace {
+
+// The candidates (differences that keep pi_R) that `plan` does not survive alone.
+std::vector<int> breaking_alone(const ModelPair &models, const ExplanationSearch &search,
+                                const std::vector<bool> &breaks_robot,
+                                const std::vector<std::string> &plan) {
+    PlanReads reads = plan_reads(models, plan);
+    std::vector<int> hit;
+    for (int d = 0; d < static_cast<int>(breaks_robot.size()); ++d)
+        if (!breaks_robot[d] && may_break(search.differences[d], reads) &&
+            !valid_with(models, search, d, plan))
+            hit.push_back(d);
+    return hit;
+}
+
+// The sets T of the plans earlier searches met (PlanCache::cheaper_plans) that are plans of
+// P_H here and cheaper than pi_R (cost `robot_cost`): the argument above holds for any such
+// plan, wherever it was found. False when one has an empty T (no explanation exists).
+bool sets_of_known_plans(const ModelPair &models, const std::vector<std::string> &robot_plan,
+                         long long robot_cost, const std::vector<bool> &breaks_robot,
+                         const PlanCache &planner, const ExplanationSearch &search,
+                         std::vector<std::vector<int>> &sets) {
+    for (const auto &plan : planner.cheaper_plans(robot_plan)) {
+        auto v = validate::validate_plan(models.human_domain, models.human_problem, plan);
+        if (!v.valid || v.cost >= robot_cost)
+            continue;
+        std::vector<int> hit = breaking_alone(models, search, breaks_robot, plan);
+        if (hit.empty())
+            return false;
+        if (std::find(sets.begin(), sets.end(), hit) == sets.end())
+            sets.push_back(std::move(hit));
+    }
+    return true;
+}
+
+} // namespace
 
 void hitting_set_explanation(const ModelPair &models, const std::vector<std::string> &robot_plan,
                              PlanCache &planner, const Deadline &deadline,
                              ExplanationSearch &search) {
     search.hitting_sets = true;
     int n = static_cast<int>(search.differences.size());
-    if (!validate::validate_plan(models.human_domain, models.human_problem, robot_plan).valid) {
+    auto robot = validate::validate_plan(models.human_domain, models.human_problem, robot_plan);
+    if (!robot.valid) {
         search.status = ExplanationStatus::NONE; // and no restricting difference can mend it
         return;
     }
+    PlanReads robot_reads = plan_reads(models, robot_plan);
     std::vector<bool> breaks_robot(n);
     for (int d = 0; d < n; ++d)
-        breaks_robot[d] = !valid_with(models, search, d, robot_plan);
+        breaks_robot[d] = may_break(search.differences[d], robot_reads) &&
+                          !valid_with(models, search, d, robot_plan);
     std::vector<std::vector<int>> sets;
+    if (!sets_of_known_plans(models, robot_plan, robot.cost, breaks_robot, planner, search, sets)) {
+        search.status = ExplanationStatus::NONE;
+        return;
+    }
     while (!deadline.expired()) {
         std::vector<int> chosen = least_hitting_set(sets, n);
         ++search.subsets_tried;
@@ -139,10 +246,9 @@ void hitting_set_explanation(const ModelPair &models, const std::vector<std::str
             search.chosen = chosen;
             return;
         }
-        std::vector<int> hit; // the candidates that break the cheaper plan alone
-        for (int d = 0; d < n; ++d)
-            if (!breaks_robot[d] && !valid_with(models, search, d, best.plan))
-                hit.push_back(d);
+        if (best.status == PlanStatus::SOLVED && v.valid && best.cost < v.cost)
+            planner.remember_cheaper_plan(robot_plan, best.plan);
+        std::vector<int> hit = breaking_alone(models, search, breaks_robot, best.plan);
         if (hit.empty()) {
             search.status = ExplanationStatus::NONE;
             return;

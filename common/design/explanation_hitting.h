@@ -19,10 +19,16 @@
 //   - a plan pi' of P_H + E cheaper than pi_R is a plan of P_H + E* unless E* holds some d that
 //     breaks pi' alone: every explanation hits T(pi') = {d : pi' invalid in P_H + {d}}.
 // The search: E = a least hitting set of the sets T found so far (an exact branch and bound;
-// ties: the first in index order); plan P_H + E; if its optimum equals c(pi_R), E is minimal
-// (every explanation hits every T, and E is a least such set); else T(pi'), of the plan found,
-// is a new set E does not hit (pi' is valid in P_H + E), so the loop ends. T(pi') empty: no
-// explanation exists.
+// ties: the lexicographically least); plan P_H + E; if its optimum equals c(pi_R), E is
+// minimal (every explanation hits every T, and E is a least such set); else T(pi'), of the
+// plan found, is a new set E does not hit (pi' is valid in P_H + E), so the loop ends. T(pi')
+// empty: no explanation exists.
+// Any plan of P_H cheaper than pi_R gives such a T, wherever it was met: the search starts
+// from the sets of the plans earlier searches met (other designs of the same task, whose
+// human models differ: PlanCache::cheaper_plans), so one planner call often ends it. E is the
+// lexicographically least minimal explanation (it hits every T of every cheaper plan, and
+// every minimal explanation is among the least hitting sets of the sets known), so the
+// answer does not depend on which plans were met before.
 
 #include "design/deadline.h"
 #include "design/explanation_search.h"
@@ -33,8 +39,8 @@ namespace envdesign::design {
 // Whether every difference is restricting as above.
 bool all_restricting(const ModelPair &models, const std::vector<ModelDifference> &differences);
 
-// The least subsets of `sets` (each a list of indices) hitting all of them; `size` the number
-// of indices. Exact; ties broken by the first found in index order.
+// The least subset of `sets` (each a list of indices) hitting all of them, ascending; `size`
+// the number of indices. Exact; of equally small ones, the lexicographically least.
 std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, int size);
 
 // minimal_explanation's search when all_restricting(models, search.differences) holds.

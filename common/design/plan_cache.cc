@@ -63,6 +63,25 @@ PlanOutcome PlanCache::memoized(Answers &answers, const TaskKey &key, bool lifte
     return outcome;
 }
 
+void PlanCache::remember_cheaper_plan(const std::vector<std::string> &robot_plan,
+                                      const std::vector<std::string> &plan) {
+    std::lock_guard lock(mutex_);
+    if (cheaper_plans_kept_ >= kMaxCheaperPlans)
+        return;
+    auto &kept = cheaper_plans_[robot_plan];
+    if (std::find(kept.begin(), kept.end(), plan) != kept.end())
+        return;
+    kept.push_back(plan);
+    ++cheaper_plans_kept_;
+}
+
+std::vector<std::vector<std::string>>
+PlanCache::cheaper_plans(const std::vector<std::string> &robot_plan) const {
+    std::lock_guard lock(mutex_);
+    auto it = cheaper_plans_.find(robot_plan);
+    return it == cheaper_plans_.end() ? std::vector<std::vector<std::string>>{} : it->second;
+}
+
 CacheCounters PlanCache::counters() const {
     std::lock_guard lock(mutex_);
     return counters_;

@@ -59,6 +59,16 @@ public:
     CacheCounters counters() const;
     const planning::PlannerOptions &options() const { return options_; }
 
+    // Plans of a human model cheaper than the robot's plan `robot_plan` there, met by
+    // explanation searches (explanation_hitting.h). Another design that keeps such a plan
+    // needs an explanation that breaks it, so its search starts from them instead of planning
+    // them again. Bounded: once kMaxCheaperPlans are kept, later ones are not.
+    void remember_cheaper_plan(const std::vector<std::string> &robot_plan,
+                               const std::vector<std::string> &plan);
+    std::vector<std::vector<std::string>>
+    cheaper_plans(const std::vector<std::string> &robot_plan) const;
+    static constexpr int kMaxCheaperPlans = 4096;
+
 private:
     using Answers = std::map<TaskKey, std::shared_future<PlanOutcome>>;
 
@@ -73,6 +83,8 @@ private:
     Answers answers_;       // by ground task
     Answers model_answers_; // by lifted model
     CacheCounters counters_;
+    std::map<std::vector<std::string>, std::vector<std::vector<std::string>>> cheaper_plans_;
+    int cheaper_plans_kept_ = 0;
 };
 
 } // namespace envdesign::design
