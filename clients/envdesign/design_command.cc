@@ -3,10 +3,10 @@
 #include "cli_error.h"
 #include "design_warnings.h"
 #include "local_run.h"
+#include "progress.h"
 #include "result_format.h"
 
 #include "design/design_search.h"
-#include "design/progress.h"
 #include "design/relevance.h"
 #include "spec/design_spec.h"
 
@@ -129,7 +129,7 @@ int run_design(const DesignFlags &flags) {
             return design::relevant_modifications(problem, c, run.local().planner(),
                                                   options.deadline);
         };
-    design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
+    ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     design::DesignResult result;
     try {
         result = design::search_design(problem, run.evaluator(), options,

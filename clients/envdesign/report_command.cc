@@ -3,12 +3,12 @@
 #include "cli_error.h"
 #include "local_run.h"
 #include "output_file.h"
+#include "progress.h"
 #include "report_floor.h"
 #include "report_html.h"
 
 #include "design/configuration.h"
 #include "design/explicability.h"
-#include "design/progress.h"
 #include "pddl/parse_error.h"
 #include "spec/design_spec.h"
 
@@ -67,7 +67,7 @@ int run_report(const ReportFlags &flags) {
     options.batch_size = 4 * flags.workers;
     options.ranking = flags.ranking;
     LocalRun run(*problem, flags.workers, flags.heuristic);
-    design::ProgressPrinter printer(stderr, isatty(fileno(stderr)));
+    ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     envdesign::design_result_t message;
     try {
         design::DesignResult result =

@@ -148,8 +148,9 @@ TEST(MinimalExplanation, HittingSetsDoNotDependOnPlansMetBefore) {
         std::optional<std::vector<int>> first =
             first_by_size(m, alone.differences, robot.plan, fresh);
         EXPECT_EQ(first.has_value(), alone.status == ExplanationStatus::FOUND);
-        if (first)
+        if (first) {
             EXPECT_EQ(*first, alone.chosen);
+        }
         ++compared;
         nonempty += !alone.chosen.empty();
         fewer_planner_calls += after.planner_checks < alone.planner_checks;

@@ -1,13 +1,13 @@
-#include "design/progress.h"
+#include "progress.h"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
-namespace envdesign::design {
+namespace envdesign::cli {
 namespace {
 
-std::string number(double value) {
+std::string progress_number(double value) {
     if (std::isinf(value))
         return "inf";
     char buffer[32];
@@ -17,7 +17,7 @@ std::string number(double value) {
 
 } // namespace
 
-void ProgressPrinter::update(const SearchProgress &p) {
+void ProgressPrinter::update(const design::SearchProgress &p) {
     auto now = std::chrono::steady_clock::now();
     bool last = p.done >= p.total;
     if (!live_ || (!last && now - last_draw_ < std::chrono::milliseconds(100)))
@@ -32,20 +32,20 @@ void ProgressPrinter::update(const SearchProgress &p) {
         std::fprintf(out_,
                      "\r%lld visited, %lld open | best %s | least open bound %s | "
                      "%lld planner runs | %.1fs\033[K",
-                     p.done, p.open, number(p.best_objective).c_str(),
-                     number(p.least_open_bound).c_str(), p.planner_runs, seconds);
+                     p.done, p.open, progress_number(p.best_objective).c_str(),
+                     progress_number(p.least_open_bound).c_str(), p.planner_runs, seconds);
     else
         std::fprintf(out_,
                      "\r[%s] %lld/%lld configurations | best %s | %lld planner runs | "
                      "%lld cache hits | %.1fs\033[K",
-                     bar.c_str(), p.done, p.total, number(p.best_objective).c_str(), p.planner_runs,
-                     p.cache_hits, seconds);
+                     bar.c_str(), p.done, p.total, progress_number(p.best_objective).c_str(),
+                     p.planner_runs, p.cache_hits, seconds);
     std::fflush(out_);
     drawn_ = true;
 }
 
-std::string ProgressPrinter::summary(const DesignResult &r) {
-    const DesignCounters &c = r.counters;
+std::string ProgressPrinter::summary(const design::DesignResult &r) {
+    const design::DesignCounters &c = r.counters;
     // What the search itself did: the exhaustive search considers every subset up to the
     // size limit, the witness search only those it generates; the explanation's evaluations
     // (the result's break-even counts them) come after.
@@ -60,18 +60,18 @@ std::string ProgressPrinter::summary(const DesignResult &r) {
         line += ", " + std::to_string(c.configurations_pruned) + " pruned as irrelevant";
     line += "; " + std::to_string(c.evaluator.planner_runs) + " planner runs, " +
             std::to_string(c.evaluator.cache_hits) + " cache hits; best " +
-            number(r.best ? r.best->objective.value : INF) + " (" +
-            (r.optimal ? "optimal" : "best found") + ") in " + number(c.seconds) + " s";
+            progress_number(r.best ? r.best->objective.value : design::INF) + " (" +
+            (r.optimal ? "optimal" : "best found") + ") in " + progress_number(c.seconds) + " s";
     if (r.gap)
-        line += "; proven gap " + number(*r.gap);
+        line += "; proven gap " + progress_number(*r.gap);
     return line;
 }
 
-void ProgressPrinter::finish(const DesignResult &result) {
+void ProgressPrinter::finish(const design::DesignResult &result) {
     if (drawn_)
         std::fprintf(out_, "\r\033[K");
     std::fprintf(out_, "%s\n", summary(result).c_str());
     std::fflush(out_);
 }
 
-} // namespace envdesign::design
+} // namespace envdesign::cli

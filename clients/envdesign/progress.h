@@ -8,19 +8,19 @@
 #include <chrono>
 #include <cstdio>
 
-namespace envdesign::design {
+namespace envdesign::cli {
 
 class ProgressPrinter {
 public:
     // `live`: draw the bar (pass isatty(fileno(out))).
     ProgressPrinter(std::FILE *out, bool live) : out_(out), live_(live) {}
 
-    void update(const SearchProgress &progress);
+    void update(const design::SearchProgress &progress);
     // Clears the bar and prints the summary line.
-    void finish(const DesignResult &result);
+    void finish(const design::DesignResult &result);
 
     // The summary line, without a newline (also for logs and tests).
-    static std::string summary(const DesignResult &result);
+    static std::string summary(const design::DesignResult &result);
 
 private:
     std::FILE *out_;
@@ -30,4 +30,4 @@ private:
     std::chrono::steady_clock::time_point last_draw_{};
 };
 
-} // namespace envdesign::design
+} // namespace envdesign::cli
