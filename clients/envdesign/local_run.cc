@@ -1,7 +1,7 @@
 #include "local_run.h"
 
 #include "cluster/result_message.h"
-#include "design/explanation.h"
+#include "design/design_explanation.h"
 #include "heuristics/heuristic.h"
 #include "service/number_flag.h"
 
@@ -47,8 +47,8 @@ envdesign::design_result_t LocalRun::message(const design::DesignResult &result,
                                              const design::Deadline &search_deadline) {
     if (!result.best)
         return cluster::result_message(problem_, result, {});
-    design::Explanation why = design::explain(problem_, result, log_, &local_.planner(),
-                                              explanation_deadline(search_deadline));
+    design::DesignExplanation why = design::explain_design(
+        problem_, result, log_, &local_.planner(), explanation_deadline(search_deadline));
     return cluster::result_message(problem_, result, {}, &why);
 }
 

@@ -104,7 +104,7 @@ envdesign::design_point_t point_message(const design::DesignProblem &problem,
 }
 
 envdesign::explanation_t explanation_message(const design::DesignProblem &problem,
-                                             const design::Explanation &e) {
+                                             const design::DesignExplanation &e) {
     envdesign::explanation_t m{};
     m.alpha = e.weights.alpha;
     m.beta = e.weights.beta;

@@ -1,8 +1,8 @@
 #pragma once
-// design::Explanation (design/explanation.h) and its parts as LCM messages (explanation_t
+// design::DesignExplanation (design/explanation.h) and its parts as LCM messages (explanation_t
 // and the types it holds), for design_result_t.
 
-#include "design/explanation.h"
+#include "design/design_explanation.h"
 #include "envdesign/design_terms_t.hpp"
 #include "envdesign/explanation_t.hpp"
 #include "envdesign/task_result_t.hpp"
@@ -17,7 +17,7 @@ envdesign::task_result_t task_message(const design::DesignProblem &problem, int 
 envdesign::design_point_t point_message(const design::DesignProblem &problem,
                                         const design::DesignPoint &point);
 envdesign::explanation_t explanation_message(const design::DesignProblem &problem,
-                                             const design::Explanation &explanation);
+                                             const design::DesignExplanation &explanation);
 // An explanation_t with every field set (sent when there is none: has_explanation false).
 envdesign::explanation_t empty_explanation();
 

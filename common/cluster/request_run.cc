@@ -6,8 +6,8 @@
 #include "cluster/lcm_evaluator.h"
 #include "cluster/spec_chunks.h"
 #include "cluster/wire.h"
+#include "design/design_explanation.h"
 #include "design/evaluation_log.h"
-#include "design/explanation.h"
 #include "design/relevance.h"
 #include "design/stored_evaluator.h"
 #include "pddl/parse_error.h"
@@ -156,12 +156,12 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     design::Evaluator &inner = stored ? static_cast<design::Evaluator &>(*stored) : evaluator;
     design::EvaluationLog searched(problem, inner); // kept for the explanation's break-even
     design::DesignResult result;
-    std::optional<design::Explanation> explanation;
+    std::optional<design::DesignExplanation> explanation;
     try {
         result = design::search_design(problem, searched, options, on_progress);
         if (result.best && !cancelled_)
-            explanation = design::explain(problem, result, searched, &relevance_cache,
-                                          explanation_deadline(options.deadline));
+            explanation = design::explain_design(problem, result, searched, &relevance_cache,
+                                                 explanation_deadline(options.deadline));
     } catch (...) {
         std::lock_guard lock(mutex_);
         evaluator_ = nullptr;

@@ -37,9 +37,9 @@ envdesign::design_counters_t counters_message(const design::DesignCounters &c,
 
 // The ranking: with an explanation, each design's point; without, objective and cost only
 // (the expectations are NaN: not known).
-std::vector<envdesign::design_point_t> ranking_message(const design::DesignProblem &problem,
-                                                       const design::DesignResult &result,
-                                                       const design::Explanation *explanation) {
+std::vector<envdesign::design_point_t>
+ranking_message(const design::DesignProblem &problem, const design::DesignResult &result,
+                const design::DesignExplanation *explanation) {
     std::vector<envdesign::design_point_t> out;
     for (const auto &r : result.ranking) {
         const design::DesignPoint *point = nullptr;
@@ -80,7 +80,7 @@ std::string no_finite_design(const design::DesignProblem &problem,
 envdesign::design_result_t result_message(const design::DesignProblem &problem,
                                           const design::DesignResult &result,
                                           const TransportCounters &transport,
-                                          const design::Explanation *explanation) {
+                                          const design::DesignExplanation *explanation) {
     envdesign::design_result_t m{};
     // Proven (the search is exact and complete) like `plan` on an unsolvable problem: exit 3.
     bool unsolvable = result.optimal && !result.limit_reached && result.best &&

@@ -3,8 +3,8 @@
 // SPEC.md's JSON): the coordinator publishes it, and the local CLI builds the same message,
 // so that one formatter (clients/cpp, result_format.h) prints both.
 
+#include "design/design_explanation.h"
 #include "design/design_search.h"
-#include "design/explanation.h"
 #include "envdesign/design_result_t.hpp"
 
 #include <string>
@@ -27,7 +27,7 @@ struct TransportCounters {
 envdesign::design_result_t result_message(const design::DesignProblem &problem,
                                           const design::DesignResult &result,
                                           const TransportCounters &transport,
-                                          const design::Explanation *explanation = nullptr);
+                                          const design::DesignExplanation *explanation = nullptr);
 
 // design_result_t of a request that failed: `exit_code` 2 (bad input) or 1.
 envdesign::design_result_t error_result(int exit_code, const std::string &message);

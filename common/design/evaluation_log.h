@@ -7,7 +7,7 @@
 //   LocalEvaluator local(problem, workers);
 //   EvaluationLog log(problem, local);
 //   DesignResult result = search_design(problem, log, options);
-//   Explanation why = explain(problem, result, log, ...);   // explanation.h
+//   DesignExplanation why = explain_design(problem, result, log, ...);   // design_explanation.h
 
 #include "design/design_point.h"
 #include "design/evaluator.h"

@@ -1,7 +1,7 @@
 #pragma once
 // robot_behaviour EXPLAINING (SPEC.md): per task, the robot either acts explicably (the
 // paper: it follows the most explicable plan pi) or follows its own optimal plan pi_R and
-// explains it to the observers with a minimal explanation E (explanation.h). New observers
+// explains it to the observers with a minimal explanation E (minimal_explanation.h). New observers
 // need the explanation again, so it is paid on every repetition, discounted like IE.
 //
 // Per task t (probability p_t, H = (1 - gamma^T) / (1 - gamma), or T when gamma = 1), the

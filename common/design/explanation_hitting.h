@@ -1,6 +1,7 @@
 #pragma once
 // Minimal explanations by implicit hitting sets, exact when every difference is restricting
-// for the human's model (explanation.h chooses this method then, else it enumerates subsets).
+// for the human's model (minimal_explanation.h chooses this method then, else it enumerates
+// subsets).
 //
 // A difference is restricting when applying it can only remove plans of P_H: removing an
 // initial atom, adding a positive precondition or goal, adding a delete effect, removing an

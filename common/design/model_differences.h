@@ -12,7 +12,7 @@
 // model has is added, what only the human's has is removed. With every difference applied,
 // P_H has P_R's initial state, goal and action schemas.
 // Not differences: action costs and static numeric values (the human's costs are what the
-// observers judge a plan by, see explanation.h), declarations (a predicate or object the
+// observers judge a plan by, see minimal_explanation.h), declarations (a predicate or object the
 // robot's model has is declared in the human's when a difference needs it), and facts about
 // predicates no precondition or goal of either model mentions (they change no plan's
 // validity or cost, so no minimal explanation contains them).

@@ -22,8 +22,8 @@ enum class ExplicabilityStatus {
     LIMIT,        // the deadline passed first: nothing is known
 };
 
-// robot_behaviour EXPLAINING (explanation.h): the robot's own optimal plan pi_R and a minimal
-// set of model differences that, told to the observers, makes pi_R optimal in their model.
+// robot_behaviour EXPLAINING (minimal_explanation.h): the robot's own optimal plan pi_R and a
+// minimal set of model differences that, told to the observers, makes pi_R optimal in their model.
 struct TaskExplanation {
     bool found = false;                   // false: no subset works (or P_R has no plan)
     double robot_optimal_cost = INF;      // c_R*, the cost of pi_R; INF: P_R has no plan

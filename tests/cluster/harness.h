@@ -7,8 +7,8 @@
 #include "cluster/coordinator.h"
 #include "cluster/planner.h"
 #include "cluster/result_message.h"
+#include "design/design_explanation.h"
 #include "design/design_search.h"
-#include "design/explanation.h"
 #include "design/local_evaluator.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
@@ -46,7 +46,8 @@ inline nlohmann::json local_result(const std::string &spec_path) {
     options.max_design_size = problem.max_design_size;
     design::EvaluationLog log(problem, evaluator);
     design::DesignResult result = design::search_design(problem, log, options);
-    design::Explanation why = design::explain(problem, result, log, &evaluator.planner(), {});
+    design::DesignExplanation why =
+        design::explain_design(problem, result, log, &evaluator.planner(), {});
     return client::result_json_value(result_message(problem, result, {}, &why));
 }
 

@@ -4,7 +4,7 @@
 
 #include "bus/codec.h"
 #include "cluster/result_message.h"
-#include "design/explanation.h"
+#include "design/design_explanation.h"
 #include "design/local_evaluator.h"
 #include "plan_diff.h"
 #include "result_format.h"
@@ -23,7 +23,8 @@ envdesign::design_result_t explained_restaurant() {
     design::DesignSearchOptions options;
     options.ranking = 3;
     design::DesignResult result = design::search_design(problem, log, options);
-    design::Explanation why = design::explain(problem, result, log, &local.planner(), {});
+    design::DesignExplanation why =
+        design::explain_design(problem, result, log, &local.planner(), {});
     return result_message(problem, result, {}, &why);
 }
 

@@ -1,6 +1,6 @@
-// Minimal explanations (explanation.h) against trying every subset of the model differences,
-// on seeded generated tasks (explaining_generator.h); the check itself against an enumeration
-// of action sequences (brute_force.h, no planner); and hand-worked cases.
+// Minimal explanations (minimal_explanation.h) against trying every subset of the model
+// differences, on seeded generated tasks (explaining_generator.h); the check itself against an
+// enumeration of action sequences (brute_force.h, no planner); and hand-worked cases.
 
 #include "brute_force.h"
 #include "design/explicability.h"

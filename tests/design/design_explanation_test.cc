@@ -3,8 +3,8 @@
 // checked against re-running the exact search at other horizons and alphas.
 
 #include "design/break_even.h"
+#include "design/design_explanation.h"
 #include "design/evaluate_design.h"
-#include "design/explanation.h"
 #include "design/local_evaluator.h"
 #include "spec/design_spec.h"
 
@@ -40,13 +40,13 @@ Configuration best_at(DesignProblem problem, double alpha, int horizon) {
 //       e^2 * f_10 + 30 + 18.75 = 48.1265 + 48.75 = 96.8765   (value of 10-11: 11.6133)
 //   without 00-01, {10-11}: no change for the observers, IE e^2 (G1) and e^4 (G2):
 //       (e^2 + e^4) / 2 * f_10 + 30 + 18.75 = 201.8680 + 48.75 = 250.6180 (value: 165.3548)
-TEST(Explanation, MarginalValuesOfTheRestaurantBarriers) {
+TEST(DesignExplanation, MarginalValuesOfTheRestaurantBarriers) {
     DesignProblem problem = load_design_problem(SPEC);
     LocalEvaluator local(problem, 1);
     EvaluationLog log(problem, local);
     DesignResult result = search_design(problem, log, {});
     ASSERT_EQ(result.best->ranked.configuration, (Configuration{B00_01, B10_11}));
-    Explanation why = explain(problem, result, log, &local.planner(), {});
+    DesignExplanation why = explain_design(problem, result, log, &local.planner(), {});
 
     double f10 = f(10), e2 = std::exp(2.0), e4 = std::exp(4.0);
     EXPECT_NEAR(why.chosen.expected_ie, 1, 1e-12);
@@ -80,12 +80,12 @@ TEST(Explanation, MarginalValuesOfTheRestaurantBarriers) {
 // f_6 = 4.6856 (it does), f_7 = 5.2170 (it does not). Nothing overtakes the chosen design
 // for larger T (f_T < 10 and the chosen IE is already least).
 // Break-even in alpha: alpha (e^2 - 1) f_10 = 30 at alpha = 30 / 41.6135 = 0.72092.
-TEST(Explanation, BreakEvenOfTheRestaurant) {
+TEST(DesignExplanation, BreakEvenOfTheRestaurant) {
     DesignProblem problem = load_design_problem(SPEC);
     LocalEvaluator local(problem, 1);
     EvaluationLog log(problem, local);
     DesignResult result = search_design(problem, log, {});
-    Explanation why = explain(problem, result, log, nullptr, {});
+    DesignExplanation why = explain_design(problem, result, log, nullptr, {});
     const BreakEven &b = why.break_even;
     ASSERT_TRUE(b.horizon_down);
     EXPECT_EQ(b.horizon_down->at, 6);
@@ -111,7 +111,7 @@ TEST(Explanation, BreakEvenOfTheRestaurant) {
 // Every one of the 64 designs evaluated: the break-even found among them is the exact one
 // (re-running the search at each T from 1 to 40 changes its answer exactly there), and the
 // search's own evaluated set can only report a crossing as late as or later than it.
-TEST(Explanation, BreakEvenAmongAllDesignsIsExact) {
+TEST(DesignExplanation, BreakEvenAmongAllDesignsIsExact) {
     DesignProblem problem = load_design_problem(SPEC);
     LocalEvaluator local(problem, 2);
     EvaluationLog all(problem, local);
@@ -134,7 +134,7 @@ TEST(Explanation, BreakEvenAmongAllDesignsIsExact) {
 
     EvaluationLog searched(problem, local);
     DesignResult result = search_design(problem, searched, {});
-    Explanation why = explain(problem, result, searched, nullptr, {});
+    DesignExplanation why = explain_design(problem, result, searched, nullptr, {});
     ASSERT_TRUE(why.break_even.horizon_down && exact.horizon_down);
     EXPECT_LE(why.break_even.horizon_down->at, exact.horizon_down->at);
     EXPECT_LT(why.break_even.designs_compared, 64);
@@ -208,7 +208,7 @@ TEST(EvaluateDesign, KnownDesignAndUnknownNames) {
 // 10 * 7 per task, explaining (2 differences told) 1 * f_10 + 20 * 2 * f_10 + same robot
 // cost, so G1 acts explicably (e^2 = 7.39 < 41). Each marginal point must give exactly the
 // objective that evaluating its design does, under the spec's weights and under others.
-TEST(Explanation, ExplainingDesignPointsChooseAgainUnderOtherWeights) {
+TEST(DesignExplanation, ExplainingDesignPointsChooseAgainUnderOtherWeights) {
     DesignProblem problem = load_design_problem(SPEC);
     problem.weights.behaviour = RobotBehaviour::EXPLAINING;
     problem.weights.explanation_cost = 20;
@@ -217,7 +217,7 @@ TEST(Explanation, ExplainingDesignPointsChooseAgainUnderOtherWeights) {
     DesignResult result = search_design(problem, log, {});
     ASSERT_EQ(result.best->ranked.configuration, (Configuration{B00_01, B10_11}));
     EXPECT_NEAR(result.best->objective.value, f(10) + 60 + 18.75, 1e-9);
-    Explanation why = explain(problem, result, log, &local.planner(), {});
+    DesignExplanation why = explain_design(problem, result, log, &local.planner(), {});
     EXPECT_EQ(why.break_even.designs_compared, 0); // not computed: choices move with T, alpha
     ASSERT_EQ(why.marginal.size(), 2u);
     for (const auto &m : why.marginal) {

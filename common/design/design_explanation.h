@@ -1,5 +1,6 @@
 #pragma once
-// Why the chosen design is the answer, as values (presentation is the clients' business):
+// Why the chosen design is the answer, as values (presentation is the clients' business). Not
+// the robot explaining itself to people (robot_behaviour EXPLAINING: minimal_explanation.h).
 //   - the objective's terms and the least inexplicability term possible (every IE at its
 //     least: 1 for EXP_COST_DIFF, 0 for COST_DIFF), so that a reader can tell "as explicable
 //     as it gets" from "still inexplicable";
@@ -14,7 +15,7 @@
 //
 //   EvaluationLog log(problem, evaluator);
 //   DesignResult result = search_design(problem, log, options);
-//   Explanation why = explain(problem, result, log, &evaluator.planner(), deadline);
+//   DesignExplanation why = explain_design(problem, result, log, &evaluator.planner(), deadline);
 
 #include "design/break_even.h"
 #include "design/design_search.h"
@@ -43,7 +44,7 @@ struct MarginalValue {
     std::optional<DesignPoint> without; // the chosen design without it; unset: not evaluated
 };
 
-struct Explanation {
+struct DesignExplanation {
     ObjectiveWeights weights;
     double discounted_horizon = 0;    // f_T(1)
     double least_ie = 1;              // 1 (EXP_COST_DIFF) or 0 (COST_DIFF)
@@ -59,7 +60,7 @@ struct Explanation {
 // (the empty design, the chosen design minus one modification, ranked designs) are
 // evaluated through `log` until `deadline`; `planner` (may be null) solves P_R, and P_H
 // when the evaluation did not keep its plan.
-Explanation explain(const DesignProblem &problem, const DesignResult &result, EvaluationLog &log,
-                    PlanCache *planner, const Deadline &deadline);
+DesignExplanation explain_design(const DesignProblem &problem, const DesignResult &result,
+                                 EvaluationLog &log, PlanCache *planner, const Deadline &deadline);
 
 } // namespace envdesign::design

@@ -1,4 +1,4 @@
-#include "design/explanation.h"
+#include "design/design_explanation.h"
 
 #include "design/explicability.h"
 
@@ -65,11 +65,11 @@ void add_plans(const DesignProblem &problem, const Configuration &chosen, int ta
 
 } // namespace
 
-Explanation explain(const DesignProblem &problem, const DesignResult &result, EvaluationLog &log,
-                    PlanCache *planner, const Deadline &deadline) {
+DesignExplanation explain_design(const DesignProblem &problem, const DesignResult &result,
+                                 EvaluationLog &log, PlanCache *planner, const Deadline &deadline) {
     const EvaluatedDesign &best = *result.best;
     const Configuration &chosen = best.ranked.configuration;
-    Explanation out;
+    DesignExplanation out;
     out.weights = problem.weights;
     out.discounted_horizon = discounted_horizon(problem.weights);
     out.least_ie = problem.weights.distance == Distance::COST_DIFF ? 0.0 : 1.0;
