@@ -30,7 +30,13 @@ constexpr int MOST_RANKED = 100000; // as `envdesign design --ranking`
 // refused name of 30 KB is not echoed back in a result.
 constexpr std::size_t MAX_CLIENT_NAME = 128;
 
-// Why `r` cannot be served (nullopt: it can).
+bool progress_changed(const design_progress_t &a, const design_progress_t &b) {
+    return a.state != b.state || a.done != b.done || a.total != b.total ||
+           a.evaluations != b.evaluations || a.best_objective != b.best_objective;
+}
+
+} // namespace
+
 std::optional<std::string> request_problem(const design_request_t &r, std::size_t max_spec_bytes) {
     if (r.search != design_request_t::SEARCH_WITNESS &&
         r.search != design_request_t::SEARCH_EXHAUSTIVE)
@@ -43,9 +49,13 @@ std::optional<std::string> request_problem(const design_request_t &r, std::size_
     if (r.ranking < 0 || r.ranking > MOST_RANKED)
         return "ranking " + std::to_string(r.ranking) + " is not in 0.." +
                std::to_string(MOST_RANKED);
-    if (std::isnan(r.time_limit_s) ||
+    // < 0: the spec's limit; -inf is no number to send for it.
+    if (!std::isfinite(r.time_limit_s) ||
         (r.time_limit_s >= 0 && design::number_problem(r.time_limit_s, design::TIME_LIMIT_S)))
         return "the time limit " + *design::number_problem(r.time_limit_s, design::TIME_LIMIT_S);
+    if (r.max_design_size > design::DESIGN_SIZE.high) // < 0: the spec's; 0: no limit
+        return "max_design_size " + std::to_string(r.max_design_size) + " is above " +
+               std::to_string(static_cast<int>(design::DESIGN_SIZE.high));
     if (r.spec.name.empty())
         return "the spec has no name";
     if (std::size_t bytes = spec_bytes(r.spec); bytes > max_spec_bytes)
@@ -54,10 +64,7 @@ std::optional<std::string> request_problem(const design_request_t &r, std::size_
     return std::nullopt;
 }
 
-bool progress_changed(const design_progress_t &a, const design_progress_t &b) {
-    return a.state != b.state || a.done != b.done || a.total != b.total ||
-           a.evaluations != b.evaluations || a.best_objective != b.best_objective;
-}
+namespace {
 
 // The evaluation file of config.state_dir, checked (store/state_dir.h); null without a
 // state directory. Throws store::StoreError.

@@ -34,6 +34,7 @@
 #include "cluster/spec_chunks.h"
 #include "cluster/spec_library.h"
 #include "envdesign/cancel_t.hpp"
+#include "envdesign/design_request_t.hpp"
 #include "envdesign/keepalive_t.hpp"
 #include "envdesign/spec_need_t.hpp"
 
@@ -42,6 +43,12 @@
 #include <memory>
 
 namespace envdesign::cluster {
+
+// Why `request` cannot be served (unknown enums, a time limit that is not finite or out of
+// its range, a max_design_size above design::DESIGN_SIZE, no spec name, a spec larger than
+// max_spec_bytes); nullopt when it can.
+std::optional<std::string> request_problem(const envdesign::design_request_t &request,
+                                           std::size_t max_spec_bytes);
 
 struct CoordinatorConfig {
     std::string instance; // this coordinator's name on the bus

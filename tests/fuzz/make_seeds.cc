@@ -14,12 +14,14 @@
 #include "envdesign/planner_heartbeat_t.hpp"
 #include "envdesign/spec_need_t.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 
 namespace {
 
@@ -149,6 +151,70 @@ void file_seeds(const fs::path &source, const fs::path &corpus) {
               arrival("s3", INT64_MAX));
 }
 
+// wire_numbers: a selector byte (0 evaluation, 1 job, 2 heartbeat, 3 request), then the
+// message; each sound, and with a number issue 21 found let through.
+void wire_number_seeds(const fs::path &source, const fs::path &out) {
+    auto seed = [&](const std::string &name, char selector, const std::string &bytes) {
+        write(out, name, std::string(1, selector) + bytes);
+    };
+    envdesign::evaluation_t e{};
+    e.sender = "planner";
+    e.coordinator = "coordinator";
+    e.kind = envdesign::job_t::KIND_EXPLICABILITY;
+    e.status = envdesign::evaluation_t::STATUS_SOLVED;
+    e.ie = 2;
+    e.robot_cost = 7;
+    e.human_plan_cost = 5;
+    e.has_human_optimal_cost = true;
+    e.human_optimal_cost = 3;
+    seed("evaluation-solved", 0, bus::encode_message(e));
+    e.ie = std::nan("");
+    seed("evaluation-nan-ie", 0, bus::encode_message(e));
+    e.kind = envdesign::job_t::KIND_ROBOT_BOUND;
+    e.has_robot_bound = true;
+    e.robot_bound = 1e308;
+    seed("robot-bound-1e308", 0, bus::encode_message(e));
+    envdesign::job_t job{};
+    job.sender = "coordinator";
+    job.planner = "planner";
+    job.kind = envdesign::job_t::KIND_EXPLICABILITY;
+    job.task = 1;
+    job.modifications = {0, 2};
+    job.num_modifications = 2;
+    job.time_limit_s = 30;
+    seed("job", 1, bus::encode_message(job));
+    job.time_limit_s = 1e10;
+    seed("job-time-1e10", 1, bus::encode_message(job));
+    envdesign::planner_heartbeat_t beat{};
+    beat.sender = "planner";
+    beat.period_ms = 200;
+    beat.capacity = 2;
+    beat.busy_seconds = 1.5;
+    seed("heartbeat", 2, bus::encode_message(beat));
+    beat.busy_seconds = std::nan("");
+    beat.period_ms = 2147483647;
+    seed("heartbeat-nan-busy", 2, bus::encode_message(beat));
+    envdesign::design_request_t r = request(restaurant(source), 1);
+    seed("request", 3, bus::encode_message(r));
+    r.time_limit_s = -std::numeric_limits<double>::infinity();
+    r.max_design_size = 1000000;
+    seed("request-minus-inf-huge-size", 3, bus::encode_message(r));
+}
+
+// service_config: a byte (odd: --max-requests=7 on the command line too), then the file.
+void service_config_seeds(const fs::path &out) {
+    write(out, "coordinator.conf",
+          std::string("\0") + "# /etc/envdesign/coordinator.conf\nmax-requests = 4\n"
+                              "planner-timeout = 0.5   # seconds\nstate-fsync = true\n"
+                              "log-level = \"warn\"\nmax-time-limit = 600\n");
+    write(out, "planner.conf",
+          std::string("\1") + "workers = 2\nheartbeat = 0.2\njob-memory-mb = 256\n"
+                              "max-requests = 9\nname = planner-a\n");
+    write(out, "bad-numbers.conf",
+          std::string("\0") + "planner-timeout = nan\nheartbeat = 1e30\ndiscovery = -1\n"
+                              "max-spec-bytes = -1\nversion = true\n");
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -161,6 +227,8 @@ int main(int argc, char **argv) {
     coordinator_seeds(source, corpus / "coordinator");
     planner_seeds(source, corpus / "planner");
     file_seeds(source, corpus);
+    wire_number_seeds(source, corpus / "wire_numbers");
+    service_config_seeds(corpus / "service_config");
     std::cout << "seeds written under " << corpus << "\n";
     return 0;
 }
