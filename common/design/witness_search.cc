@@ -148,7 +148,10 @@ public:
                 }
             }
         }
-        result_.limit_reached = interrupted || limit_seen_ || learner_.limit_seen();
+        // EXPLAINING: the phase alone proves the answer; stopped short of its proof (the
+        // deadline), the best design so far is not known to be optimal.
+        bool unproven = phase_only_ && !proven_;
+        result_.limit_reached = interrupted || limit_seen_ || learner_.limit_seen() || unproven;
         result_.optimal = !result_.limit_reached;
         if (result_.limit_reached) {
             double least = std::min(open_.empty() ? INF : open_.top().bound, least_unfinished_);
