@@ -7,6 +7,7 @@
 #include "bus/codec.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
+#include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"
 #include "envdesign/spec_chunk_t.hpp"
 
@@ -112,6 +113,38 @@ TEST(Hostile, NegativeStringLengthIsMalformedNotACrash) {
     bus.handle(std::chrono::milliseconds(500));
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
     EXPECT_TRUE(cluster.planner(0).running()) << cluster.logs();
+    EXPECT_EQ(restaurant_design(cluster).exit_code, 0) << cluster.logs();
+}
+
+// An array length of 0x15000000 in a 200-byte evaluation_t: lcm-gen's decoder resized
+// optimal_actions to it before reading a byte of them, 11 GB of std::string (found by the
+// wire_numbers fuzz target). Now a length above the bytes left is a malformed message: the
+// coordinator stays small and keeps working.
+TEST(Hostile, AnArrayLengthBeyondTheMessageIsMalformedNotAnAllocation) {
+    LocalCluster cluster(1);
+    bus::Bus bus(cluster.url(), std::make_shared<spdlog::logger>(
+                                    "attacker", std::make_shared<spdlog::sinks::null_sink_mt>()));
+    envdesign::evaluation_t e{};
+    e.sender = "planner-0";
+    e.coordinator = "coordinator";
+    e.has_optimal_actions = true;
+    e.optimal_actions = {"a"};
+    e.optimal_actions_length = 1;
+    std::string bytes = bus::encode_message(e);
+    // has_optimal_actions, the length 1, then "a" (its length 2 counts the NUL).
+    const std::string actions("\x01\0\0\0\x01\0\0\0\x02"
+                              "a\0",
+                              11);
+    auto at = bytes.find(actions);
+    ASSERT_NE(at, std::string::npos);
+    ASSERT_EQ(bytes.find(actions, at + 1), std::string::npos);
+    bytes.replace(at + 1, 4, "\x15\0\0\0", 4);
+    ASSERT_LT(bytes.size(), 300u);
+    for (int i = 0; i < 3; ++i)
+        bus.publish_raw(bus::EVALUATION, bytes.data(), static_cast<int>(bytes.size()));
+    bus.handle(std::chrono::milliseconds(500));
+    ASSERT_TRUE(cluster.coordinator().running()) << cluster.logs();
+    EXPECT_LT(resident_kib(cluster.coordinator().pid()), 400 * 1024) << cluster.logs();
     EXPECT_EQ(restaurant_design(cluster).exit_code, 0) << cluster.logs();
 }
 
