@@ -40,10 +40,25 @@ grep -q '^CYCLONEDDS_URI=file:///etc/envdesign/' "$dir/envdesign.env" ||
 grep -q '^LCM_DEFAULT_URL=udpm://' "$dir/envdesign.env" || fail "envdesign.env sets no LCM_DEFAULT_URL"
 
 if [ -n "$bin" ]; then
-    for service in coordinator planner bridge; do
+    for service in coordinator planner; do
         out="$("$bin/envdesign-$service" --config "$root/deploy/config/$service.conf" \
             --check-config 2>&1)" || fail "deploy/config/$service.conf: $out"
     done
+    # The bridge's check loads its design problems: the installed path names a spec the site
+    # provides, so the check says which is missing; pointed at the example, it passes.
+    set +e
+    out="$("$bin/envdesign-bridge" --config "$root/deploy/config/bridge.conf" --check-config 2>&1)"
+    code=$?
+    set -e
+    [ $code -eq 2 ] && [[ "$out" == *"/etc/envdesign/problems/restaurant/design.textproto"* ]] ||
+        [ -f /etc/envdesign/problems/restaurant/design.textproto ] ||
+        fail "the bridge's check does not name its missing spec (exit $code): $out"
+    bridge_conf="$(mktemp)"
+    sed "s#=/etc/envdesign/problems/restaurant/design.textproto#=$root/examples/restaurant/c-two-tasks-t10.textproto#" \
+        "$root/deploy/config/bridge.conf" >"$bridge_conf"
+    out="$("$bin/envdesign-bridge" --config "$bridge_conf" --check-config 2>&1)" ||
+        fail "deploy/config/bridge.conf with the example's spec: $out"
+    rm -f "$bridge_conf"
     # A broken copy is refused, naming the line.
     broken="$(mktemp)"
     trap 'rm -rf "$broken" "${scratch:-}"' EXIT

@@ -159,7 +159,8 @@ TEST(FloorCli, BadInputIsExitTwoWithItsPlace) {
     out = run_import("csv", l_shape().yaml(), "--tasks " + csv, 2);
     EXPECT_NE(out.find(csv + ":2:6: error: no place 'office'"), std::string::npos) << out;
     out = run_import("sight", l_shape().yaml(), "--sight -1", 2);
-    EXPECT_NE(out.find("--sight must be a finite number >= 0"), std::string::npos) << out;
+    EXPECT_NE(out.find("--sight: must be a number in [0, 1e+06] (got -1)"), std::string::npos)
+        << out;
     out = run_import("json", l_shape().yaml(), "--json --graph 3", 2);
     EXPECT_NE(out.find("\"exit_code\":2"), std::string::npos) << out;
 }
