@@ -48,10 +48,6 @@ extern "C" void on_interrupt(int signal) {
 // A client of the coordinator at `flags.connect`: the same search, run by the cluster.
 // Ctrl-C (or SIGTERM) cancels the request; the coordinator's best design so far is printed.
 int run_design_remote(const DesignFlags &flags) {
-    // TODO(issue 25): carry it in design_request_t; the coordinator leaves padded designs out.
-    if (flags.ranking_all)
-        throw CommandError(2, "--ranking-all does not travel to a coordinator yet: run it "
-                              "without --connect");
     if (flags.workers != 1)
         spdlog::warn("--workers does not apply with --connect: the cluster's planners work");
     std::signal(SIGINT, on_interrupt);
@@ -60,6 +56,7 @@ int run_design_remote(const DesignFlags &flags) {
     options.time_limit_s = flags.time_limit_s;
     options.max_design_size = flags.max_design_size;
     options.ranking = flags.ranking;
+    options.ranking_all = flags.ranking_all;
     options.prune = flags.prune;
     options.search = flags.search;
     options.heuristic = flags.heuristic;

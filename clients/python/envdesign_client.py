@@ -2,7 +2,7 @@
 """envdesign's Python client: the optimal design of a spec file from a running coordinator.
 
     envdesign-client SPEC [--connect URL] [--json] [--timeout S] [--time-limit S]
-        [--max-design-size K] [--ranking N] [--search witness|exhaustive]
+        [--max-design-size K] [--ranking N [--ranking-all]] [--search witness|exhaustive]
         [--prune none|relevant] [--heuristic H] [--key-file FILE]
 
 prints what `envdesign design SPEC --connect URL` prints (envdesign_text.py), or with --json
@@ -386,7 +386,8 @@ def design_result(spec_path, url=None, *args, **options):
 
 def design_message(spec_path, url=None, time_limit_s=-1, max_design_size=-1, prune="none",
                    heuristic="lmcut", timeout_s=0, on_progress=None, resend_after_s=3,
-                   give_up_after_s=30, key_file=None, ranking=0, search="witness"):
+                   give_up_after_s=30, key_file=None, ranking=0, search="witness",
+                   ranking_all=False):
     """(design_result_t, exit code): the coordinator's result message itself, which
     envdesign_text.result_text() prints as the C++ CLI does. Raises as design() does."""
     path = envdesign_auth.key_file_path(key_file)
@@ -401,6 +402,7 @@ def design_message(spec_path, url=None, time_limit_s=-1, max_design_size=-1, pru
     request.heuristic = {"lmcut": 0, "hmax": 1, "blind": 2}[heuristic]
     request.search = {"witness": 0, "exhaustive": 1}[search]
     request.ranking = int(ranking)
+    request.ranking_all = 1 if ranking_all else 0
     bus = UdpmBus(url or os.environ.get("LCM_DEFAULT_URL") or DEFAULT_URL, auth)
     try:
         return _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_up_after_s)
@@ -488,6 +490,8 @@ def main():
     parser.add_argument("--max-design-size", type=int, default=-1)
     parser.add_argument("--ranking", type=int, default=0,
                         help="list the N best designs, best first (0: the best alone)")
+    parser.add_argument("--ranking-all", action="store_true",
+                        help="rank designs with a modification that does not pay for itself too")
     parser.add_argument("--search", choices=["witness", "exhaustive"], default="witness")
     parser.add_argument("--prune", choices=["none", "relevant"], default="none")
     parser.add_argument("--heuristic", choices=["lmcut", "hmax", "blind"], default="lmcut")
@@ -504,7 +508,8 @@ def main():
         result, code = design_message(args.spec, args.connect, args.time_limit,
                                       args.max_design_size, args.prune, args.heuristic,
                                       args.timeout, progress, key_file=args.key_file,
-                                      ranking=args.ranking, search=args.search)
+                                      ranking=args.ranking, search=args.search,
+                                      ranking_all=args.ranking_all)
     except SpecError as e:  # "FILE:LINE:COL: error: ..." as the other commands say it
         print(e, file=sys.stderr)
         return 2

@@ -49,6 +49,8 @@ std::optional<std::string> request_problem(const design_request_t &r, std::size_
     if (r.ranking < 0 || r.ranking > MOST_RANKED)
         return "ranking " + std::to_string(r.ranking) + " is not in 0.." +
                std::to_string(MOST_RANKED);
+    if (r.ranking_all != 0 && r.ranking_all != 1)
+        return "ranking_all " + std::to_string(r.ranking_all) + " is not 0 or 1";
     // < 0: the spec's limit; -inf is no number to send for it.
     if (!std::isfinite(r.time_limit_s) ||
         (r.time_limit_s >= 0 && design::number_problem(r.time_limit_s, design::TIME_LIMIT_S)))

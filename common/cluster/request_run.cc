@@ -190,6 +190,7 @@ design::DesignSearchOptions RequestRun::options(const design::DesignProblem &pro
     options.max_design_size =
         request_.max_design_size >= 0 ? request_.max_design_size : problem.max_design_size;
     options.ranking = request_.ranking;
+    options.ranking_all = request_.ranking_all == 1;
     double seconds = request_.time_limit_s >= 0 ? request_.time_limit_s : problem.time_limit_s;
     double cap = context_.max_time_limit_s;
     if (cap > 0 && (seconds <= 0 || seconds > cap))

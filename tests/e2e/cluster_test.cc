@@ -273,6 +273,34 @@ TEST(EndToEnd, CliConnectRanksAsTheLocalRun) {
               nlohmann::json({"barrier-01-02", "barrier-11-12"}));
 }
 
+// --ranking-all travels too (design_request_t.ranking_all): on tests/data/ranking/padded.textproto
+// the coordinator lists the designs padded with a free modification that changes nothing only
+// when asked, as the local run does.
+TEST(EndToEnd, CliConnectRankingAllAsTheLocalRun) {
+    LocalCluster cluster(1);
+    const std::string spec = source("tests/data/ranking/padded.textproto");
+    for (const char *all : {"", " --ranking-all"}) {
+        SCOPED_TRACE(all);
+        int exit_code = -1;
+        std::string flags = std::string(" --json --ranking 4") + all;
+        std::string local = command_output(
+            binary("envdesign") + " design " + spec + flags + " 2>/dev/null", &exit_code);
+        ASSERT_EQ(exit_code, 0) << local;
+        std::string remote = command_output(binary("envdesign") + " design " + spec + flags +
+                                                " --connect '" + cluster.url() + "' 2>/dev/null",
+                                            &exit_code);
+        ASSERT_EQ(exit_code, 0) << remote << cluster.logs();
+        nlohmann::json want = nlohmann::json::parse(local), got = nlohmann::json::parse(remote);
+        ASSERT_EQ(got.at("ranking").size(), 4u);
+        EXPECT_EQ(got.at("ranking"), want.at("ranking"));
+        bool padded = false;
+        for (const auto &point : got.at("ranking"))
+            for (const auto &name : point.at("design"))
+                padded = padded || name == "paint-wall";
+        EXPECT_EQ(padded, !std::string(all).empty());
+    }
+}
+
 // Ctrl-C on `envdesign design --connect`: the request is cancelled on the coordinator (it
 // does not keep a slot searching for nobody) and the best design so far is printed, exit 4.
 TEST(EndToEnd, CliInterruptedCancelsTheRequest) {

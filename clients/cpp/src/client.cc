@@ -230,6 +230,7 @@ Result run_design_remote(const std::string &spec_path, const std::string &lcm_ur
     request.time_limit_s = options.time_limit_s;
     request.max_design_size = options.max_design_size;
     request.ranking = options.ranking;
+    request.ranking_all = options.ranking_all ? 1 : 0;
     request.prune = *prune;
     request.search = *search;
     request.heuristic = *heuristic;

@@ -41,9 +41,10 @@ struct Progress {
 };
 
 struct Options {
-    double time_limit_s = -1;        // < 0: the spec's time_limit_s; 0: none
-    int max_design_size = -1;        // < 0: the spec's; 0: no limit
-    int ranking = 0;                 // the N best designs in the result (0: the best alone)
+    double time_limit_s = -1; // < 0: the spec's time_limit_s; 0: none
+    int max_design_size = -1; // < 0: the spec's; 0: no limit
+    int ranking = 0;          // the N best designs in the result (0: the best alone)
+    bool ranking_all = false; // rank designs with a modification that does not pay for itself too
     std::string search = "witness";  // "witness" | "exhaustive"
     std::string prune = "none";      // "none" | "relevant"
     std::string heuristic = "lmcut"; // "lmcut" | "hmax" | "blind"
