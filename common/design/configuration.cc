@@ -46,4 +46,17 @@ std::string to_string(const DesignProblem &problem, const Configuration &configu
     return out + "}";
 }
 
+bool next_subset(std::vector<int> &subset, int n) {
+    int k = static_cast<int>(subset.size());
+    for (int i = k - 1; i >= 0; --i) {
+        if (subset[i] < n - k + i) {
+            ++subset[i];
+            for (int j = i + 1; j < k; ++j)
+                subset[j] = subset[j - 1] + 1;
+            return true;
+        }
+    }
+    return false;
+}
+
 } // namespace envdesign::design

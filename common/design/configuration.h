@@ -41,4 +41,8 @@ std::vector<std::string> design_names(const DesignProblem &problem,
 // "{barrier-a, barrier-b}" for logs.
 std::string to_string(const DesignProblem &problem, const Configuration &configuration);
 
+// Advances `subset` (ascending indices below n) to the next subset of its size in
+// lexicographic order; false after the last one.
+bool next_subset(std::vector<int> &subset, int n);
+
 } // namespace envdesign::design

@@ -11,21 +11,6 @@
 namespace envdesign::design {
 namespace {
 
-// Advances `c` (ascending indices below n) to the next k-subset in lexicographic order;
-// false after the last one.
-bool next_combination(std::vector<int> &c, int n) {
-    int k = static_cast<int>(c.size());
-    for (int i = k - 1; i >= 0; --i) {
-        if (c[i] < n - k + i) {
-            ++c[i];
-            for (int j = i + 1; j < k; ++j)
-                c[j] = c[j - 1] + 1;
-            return true;
-        }
-    }
-    return false;
-}
-
 long long saturating_add(long long a, long long b) { return a > LLONG_MAX - b ? LLONG_MAX : a + b; }
 
 class Search {
@@ -82,7 +67,7 @@ private:
                 if (options_.deadline.expired())
                     return false;
                 consider(Configuration(combination), batch);
-            } while (next_combination(combination, n));
+            } while (next_subset(combination, n));
             flush(batch);
         }
         return true;

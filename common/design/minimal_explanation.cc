@@ -9,20 +9,6 @@
 namespace envdesign::design {
 namespace {
 
-// The next k-subset of {0..n-1} in lexicographic order; false after the last.
-bool next_subset(std::vector<int> &subset, int n) {
-    int k = static_cast<int>(subset.size());
-    for (int i = k - 1; i >= 0; --i) {
-        if (subset[i] < n - k + i) {
-            ++subset[i];
-            for (int j = i + 1; j < k; ++j)
-                subset[j] = subset[j - 1] + 1;
-            return true;
-        }
-    }
-    return false;
-}
-
 // Human plans cheaper than pi_R met so far in one search (the human's own optimal plan
 // first). One still valid and cheaper in P_H + E proves that pi_R is not optimal there, the
 // planner's answer, without a search; so the subsets tried, and the explanation, stay the same.

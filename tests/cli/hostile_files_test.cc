@@ -23,18 +23,8 @@ const std::string EXAMPLES = std::string(ENVDESIGN_TEST_DATA) + "/../../examples
 // `envdesign ARGUMENTS` with stderr captured and stdout to `stdout_to` (or captured too),
 // killed after 20 s: a hang must fail the test, not stall it.
 CommandResult run_bounded(const std::string &arguments, const std::string &stdout_to = "") {
-    std::string command = "timeout 20 " + std::string(ENVDESIGN_BIN_DIR) + "/envdesign " +
-                          arguments + " 2>&1" + (stdout_to.empty() ? "" : " >" + stdout_to);
-    CommandResult result;
-    FILE *pipe = popen(command.c_str(), "r");
-    if (!pipe)
-        return result;
-    char buffer[4096];
-    while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe))
-        result.out.append(buffer, n);
-    int status = pclose(pipe);
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
+    return run_shell("timeout 20 " + std::string(ENVDESIGN_BIN_DIR) + "/envdesign " + arguments +
+                     " 2>&1" + (stdout_to.empty() ? "" : " >" + stdout_to));
 }
 
 class HostileFiles : public ::testing::Test {

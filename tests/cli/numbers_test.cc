@@ -157,17 +157,7 @@ TEST(NumberFlags, NanAndInfiniteTimeLimitsAreUsageErrors) {
 
 // A command line of `binary` (in the build's bin folder), all output kept.
 CommandResult run_binary(const std::string &binary, const std::string &arguments) {
-    std::string command = std::string(ENVDESIGN_BIN_DIR) + "/" + binary + " " + arguments + " 2>&1";
-    CommandResult result;
-    FILE *pipe = popen(command.c_str(), "r");
-    if (!pipe)
-        return result;
-    char buffer[4096];
-    while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe))
-        result.out.append(buffer, n);
-    int status = pclose(pipe);
-    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return result;
+    return run_shell(std::string(ENVDESIGN_BIN_DIR) + "/" + binary + " " + arguments + " 2>&1");
 }
 
 // `flag VALUE` after `arguments` exits 2 for NaN, inf, 1e30 and -1, naming the flag and the

@@ -18,9 +18,8 @@ struct CommandResult {
     std::string out; // stdout and, with `merge_stderr`, stderr
 };
 
-inline CommandResult run_envdesign(const std::string &arguments, bool merge_stderr = true) {
-    std::string command = std::string(ENVDESIGN_BIN_DIR) + "/envdesign " + arguments +
-                          (merge_stderr ? " 2>&1" : " 2>/dev/null");
+// A shell command line, its stdout captured (redirect stderr in `command` to keep it too).
+inline CommandResult run_shell(const std::string &command) {
     CommandResult result;
     FILE *pipe = popen(command.c_str(), "r");
     if (!pipe)
@@ -31,6 +30,11 @@ inline CommandResult run_envdesign(const std::string &arguments, bool merge_stde
     int status = pclose(pipe);
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+inline CommandResult run_envdesign(const std::string &arguments, bool merge_stderr = true) {
+    return run_shell(std::string(ENVDESIGN_BIN_DIR) + "/envdesign " + arguments +
+                     (merge_stderr ? " 2>&1" : " 2>/dev/null"));
 }
 
 } // namespace envdesign::testing
