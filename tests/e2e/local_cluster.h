@@ -331,4 +331,15 @@ inline void expect_same_design(const nlohmann::json &got, const nlohmann::json &
     }
 }
 
+// `envdesign design` of the restaurant through the cluster at `url`: exit 0 and the
+// self-contained run's design (`logs`: the cluster's, shown on a failure).
+inline void expect_connect_gives_self_contained(const std::string &url, const std::string &logs) {
+    int exit_code = -1;
+    std::string json = command_output(binary("envdesign") + " design " + source(RESTAURANT) +
+                                          " --json --connect '" + url + "' 2>/dev/null",
+                                      &exit_code);
+    ASSERT_EQ(exit_code, 0) << json << logs;
+    expect_same_design(nlohmann::json::parse(json), self_contained(source(RESTAURANT)));
+}
+
 } // namespace envdesign::e2e

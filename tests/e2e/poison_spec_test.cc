@@ -69,12 +69,7 @@ TEST(Poison, ASpecWithHugeNumbersThroughConnectIsThatRequestsError) {
         fs::remove_all(fs::path(spec).parent_path());
     }
     // The next, good, request is answered as the self-contained run answers it.
-    int exit_code = -1;
-    std::string json = command_output(binary("envdesign") + " design " + source(RESTAURANT) +
-                                          " --json" + connect + " 2>/dev/null",
-                                      &exit_code);
-    ASSERT_EQ(exit_code, 0) << json << cluster.logs();
-    expect_same_design(nlohmann::json::parse(json), self_contained(source(RESTAURANT)));
+    expect_connect_gives_self_contained(cluster.url(), cluster.logs());
     EXPECT_TRUE(cluster.coordinator().running()) << cluster.logs();
 }
 
