@@ -71,7 +71,7 @@ Outcome ArrivalTracker::receive(const Arrival &arrival, double now, int64_t now_
     if (out.verdict != Verdict::ACCEPTED)
         return out;
     Problem &p = it->second;
-    out.use = classify(p, arrival, now, out.first_of_name);
+    out.use = classify(p, arrival, now, out);
     if (out.use == Use::UNKNOWN_TASK)
         return out;
     p.estimator.add(arrival.task);
@@ -97,19 +97,21 @@ bool ArrivalTracker::new_task_token(Problem &p, double now) {
     return p.new_task_tokens >= 1;
 }
 
-Use ArrivalTracker::classify(Problem &p, const Arrival &arrival, double now, bool &first_of_name) {
+Use ArrivalTracker::classify(Problem &p, const Arrival &arrival, double now, Outcome &out) {
     const std::string &task = arrival.task;
     if (p.tasks.count(task) || p.proposed.count(task))
         return Use::ESTIMATED;
     bool admitted = static_cast<std::size_t>(p.status.new_tasks) < config_.max_new_tasks &&
                     new_task_token(p, now);
-    if (!arrival.problem.empty() && !p.refused.count(task) && !admitted)
+    out.held_back = !arrival.problem.empty() && !p.refused.count(task) && !admitted;
+    if (out.held_back)
         ++p.status.new_tasks_held_back;
     if (arrival.problem.empty() || p.refused.count(task) || !admitted) {
         ++p.status.unknown_task;
         auto &names = p.status.unknown_task_names;
         auto it = names.find(task);
-        first_of_name = it == names.end();
+        // Beyond MAX_UNKNOWN_NAMES names a name is never remembered: not a first either.
+        out.first_of_name = it == names.end() && names.size() < ProblemStatus::MAX_UNKNOWN_NAMES;
         if (it != names.end())
             ++it->second;
         else if (names.size() < ProblemStatus::MAX_UNKNOWN_NAMES)

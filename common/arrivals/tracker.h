@@ -89,7 +89,9 @@ enum class Use { REJECTED, ESTIMATED, NEW_TASK, UNKNOWN_TASK };
 struct Outcome {
     Verdict verdict = Verdict::ACCEPTED;
     Use use = Use::REJECTED;
-    bool first_of_name = false; // UNKNOWN_TASK: the first arrival of this task name
+    bool first_of_name = false; // UNKNOWN_TASK: the first arrival of this task name (of the
+                                // first MAX_UNKNOWN_NAMES names)
+    bool held_back = false;     // UNKNOWN_TASK: a new task beyond max_new_tasks or the rate
     bool clock_skewed = false;  // accepted though stamped beyond max_future_s ahead
     std::optional<Request> request;
 };
@@ -179,7 +181,7 @@ private:
         bool designed = false;       // a design was answered for it
     };
 
-    Use classify(Problem &p, const Arrival &arrival, double now, bool &first_of_name);
+    Use classify(Problem &p, const Arrival &arrival, double now, Outcome &out);
     bool new_task_token(Problem &p, double now);
     Request make_request(Problem &p, Reason reason);
 

@@ -150,6 +150,18 @@ void Bridge::receive(const arrivals::Arrival &arrival, double t, std::int64_t ut
 }
 
 void Bridge::log_rejected(const arrivals::Arrival &a, const arrivals::Outcome &outcome, double t) {
+    if (outcome.held_back) { // a flood of made-up new tasks must not flood the log
+        arrivals::LogThrottle::Decision d = held_back_throttle_.should_log(outcome.verdict, t);
+        if (d.log)
+            bus_.log().warn("request - | {}: new task {} from site {} held back (taken in: at "
+                            "most {} per problem, {} at once, then one per {} s): counted as an "
+                            "unknown task{}",
+                            a.problem_id, quoted(a.task), quoted(a.site),
+                            config_.tracker.max_new_tasks, config_.tracker.new_task_burst,
+                            config_.tracker.new_task_interval_s,
+                            d.suppressed ? fmt::format(" ({} more not logged)", d.suppressed) : "");
+        return;
+    }
     if (outcome.verdict == arrivals::Verdict::ACCEPTED) { // an unknown task: once per name
         if (outcome.first_of_name)
             bus_.log().warn("request - | {}: arrivals of unknown task {} (site {}) are counted, "
@@ -264,6 +276,8 @@ void Bridge::tick() {
         publish_estimate(id, t, false);
     for (const auto &[verdict, count] : skew_throttle_.overdue(t))
         bus_.log().warn("request - | {} more arrivals with skewed clocks not logged", count);
+    for (const auto &[verdict, count] : held_back_throttle_.overdue(t))
+        bus_.log().warn("request - | {} more new tasks held back not logged", count);
     for (const auto &[verdict, count] : throttle_.overdue(t))
         bus_.log().warn("request - | {} more bad arrivals ({}) not logged", count,
                         arrivals::to_string(verdict));
@@ -276,8 +290,11 @@ DesignInForce Bridge::design(const std::string &problem_id) const {
 
 BridgeStats Bridge::stats() const {
     std::lock_guard lock(mutex_);
-    return {tracker_.counters(), requests_,        answers_,
-            reweighs_,           reweigh_changes_, reweigh_planning_};
+    BridgeStats stats{tracker_.counters(), requests_,        answers_,
+                      reweighs_,           reweigh_changes_, reweigh_planning_};
+    for (const auto &id : tracker_.problem_ids())
+        stats.new_tasks_held_back += tracker_.status(id)->new_tasks_held_back;
+    return stats;
 }
 
 } // namespace envdesign::bridge

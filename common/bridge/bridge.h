@@ -70,9 +70,10 @@ struct BridgeStats {
     arrivals::IntakeCounters intake;
     long long requests = 0; // re-evaluations asked for (the initial ones included)
     long long answers = 0;
-    long long reweighs = 0;         // re-weightings answered
-    long long reweigh_changes = 0;  // of those, new designs published
-    long long reweigh_planning = 0; // of those, needing evaluations the store lacks
+    long long reweighs = 0;            // re-weightings answered
+    long long reweigh_changes = 0;     // of those, new designs published
+    long long reweigh_planning = 0;    // of those, needing evaluations the store lacks
+    long long new_tasks_held_back = 0; // every problem's, beyond its new-task bounds
 };
 
 class Bridge {
@@ -111,7 +112,8 @@ private:
     mutable std::mutex mutex_;
     arrivals::ArrivalTracker tracker_;
     arrivals::LogThrottle throttle_;
-    arrivals::LogThrottle skew_throttle_; // accepted arrivals with a skewed clock
+    arrivals::LogThrottle skew_throttle_;      // accepted arrivals with a skewed clock
+    arrivals::LogThrottle held_back_throttle_; // new tasks beyond their bounds
     struct Published {
         DesignInForce design;
         double at = -1e9;         // last estimate sent

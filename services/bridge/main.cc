@@ -149,8 +149,8 @@ std::optional<std::string> bridge_startup_problem(const Flags &f, const bridge::
     return std::nullopt;
 }
 
-// The bridge's part of its status: re-evaluations awaited, and every arrival its intake
-// rejected, by verdict.
+// The bridge's part of its status: re-evaluations awaited, every arrival its intake
+// rejected, by verdict, and the new tasks held back beyond --max-new-tasks or their rate.
 void fill_status(const bridge::BridgeStats &stats, envdesign::service_status_t &status) {
     status.requests_open = static_cast<std::int32_t>(stats.requests - stats.answers);
     for (int v = 0; v < arrivals::VERDICTS; ++v) {
@@ -159,6 +159,8 @@ void fill_status(const bridge::BridgeStats &stats, envdesign::service_status_t &
             bus::add_drop(status, "dds:arrivals", arrivals::to_string(verdict),
                           stats.intake.count(verdict));
     }
+    if (stats.new_tasks_held_back > 0)
+        bus::add_drop(status, "dds:arrivals", "new_task_held_back", stats.new_tasks_held_back);
 }
 
 } // namespace

@@ -12,11 +12,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace envdesign::testing {
@@ -133,6 +135,21 @@ inline int publish(const std::string &dir, const std::string &replay, int domain
     EXPECT_TRUE(rc) << "envdesign-arrivals did not finish:\n" << p.output();
     EXPECT_EQ(rc.value_or(-1), 0) << p.output();
     return rc.value_or(-1);
+}
+
+// The CPU time (user and system) process `pid` has used so far, seconds (/proc/PID/stat).
+inline double cpu_seconds(pid_t pid) {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+    std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Fields from the state on (the third), after the name in parentheses (it may hold spaces):
+    // utime and stime are the 14th and 15th.
+    std::istringstream fields(stat.substr(stat.rfind(')') + 1));
+    std::string skip;
+    for (int field = 3; field < 14; ++field)
+        fields >> skip;
+    long long utime = 0, stime = 0;
+    fields >> utime >> stime;
+    return static_cast<double>(utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
 }
 
 // The estimate's probability of `task` (0 if absent).

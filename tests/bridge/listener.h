@@ -1,17 +1,19 @@
 #pragma once
-// What the tests hear on LCM: the bridge's estimates and requests, and every design result,
-// collected by a bus thread of the test's own.
+// What the tests hear on LCM: the bridge's estimates and requests, every design result and
+// the last status of each service, collected by a bus thread of the test's own.
 
 #include "bus/bus.h"
 #include "bus/channels.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
+#include "envdesign/service_status_t.hpp"
 #include "envdesign/task_distribution_t.hpp"
 
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -36,6 +38,14 @@ public:
             [this](const envdesign::task_distribution_t &m) { add(requests_, m); }));
         subscriptions_.push_back(bus_.subscribe<envdesign::design_result_t>(
             bus::RESULT, [this](const envdesign::design_result_t &m) { add(results_, m); }));
+        subscriptions_.push_back(bus_.subscribe<envdesign::service_status_t>(
+            bus::STATUS, [this](const envdesign::service_status_t &m) {
+                {
+                    std::lock_guard lock(mutex_);
+                    statuses_[m.sender] = m;
+                }
+                changed_.notify_all();
+            }));
         thread_ = std::thread([this] {
             while (!stop_)
                 bus_.handle(std::chrono::milliseconds(20));
@@ -73,6 +83,22 @@ public:
         return std::nullopt;
     }
 
+    // The last status of the service named `sender` (--name), if heard.
+    std::optional<envdesign::service_status_t> status(const std::string &sender) {
+        std::lock_guard lock(mutex_);
+        auto it = statuses_.find(sender);
+        return it == statuses_.end() ? std::nullopt : std::optional(it->second);
+    }
+    // A drop counter (channel, reason) of that status; -1 if it has none.
+    long long status_drops(const std::string &sender, const std::string &channel,
+                           const std::string &reason) {
+        auto s = status(sender);
+        for (int i = 0; s && i < s->num_drops; ++i)
+            if (s->drop_channels[i] == channel && s->drop_reasons[i] == reason)
+                return s->drop_counts[i];
+        return -1;
+    }
+
     bus::Bus &bus() { return bus_; }
 
 private:
@@ -93,6 +119,7 @@ private:
     std::condition_variable changed_;
     std::vector<Heard<envdesign::task_distribution_t>> distributions_, requests_;
     std::vector<Heard<envdesign::design_result_t>> results_;
+    std::map<std::string, envdesign::service_status_t> statuses_;
     std::vector<bus::Subscription> subscriptions_;
     std::atomic<bool> stop_{false};
     std::thread thread_;
