@@ -150,18 +150,23 @@ TEST_F(Starvation, APlannerStopsWithinASecondOfSigterm) {
 }
 
 // The audit's flood: forty requests that never end (blind search, no time limit), from forty
-// client names in one process. On a keyed bus the process is the client (fair_share.h): the
-// flood has used the planners far more lately than a well-behaved client, whose request
-// takes every planner it asks for at once and finishes within twice its quiet time; the
+// client names in one process, against a well-behaved client. Fair shares go by client
+// (fair_share.h): on a keyed bus the client is the process that signed (the flood is one
+// client), on an unkeyed one the client's name (the flood is forty). The well-behaved
+// client's request must finish within twice its quiet time (keyed: the flood has used the
+// planners far more lately, so the request takes every planner it asks for at once); the
 // planners' resident memory stays under --job-memory-mb. Two sizes, three runs each (the
 // medians are compared), quiet then flooded: the restaurant (0.04 s quiet, where withdrawing
 // the flood's searches is most of the time) and blocksworld 14 (a few seconds of planner
 // work: the share of the planners is what counts). ENVDESIGN_FLOOD_LOGS=FILE writes the
 // services' logs there, at debug level (each job sent and answered, with times).
-TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
-    std::string key = (dir / "bus.key").string();
-    std::ofstream(key) << "k1 " << std::string(64, '7') << "\n";
-    fs::permissions(key, fs::perms::owner_read | fs::perms::owner_write);
+void flood_against_a_client(const fs::path &dir, const std::string &spec, bool keyed) {
+    std::string key;
+    if (keyed) {
+        key = (dir / "bus.key").string();
+        std::ofstream(key) << "k1 " << std::string(64, '7') << "\n";
+        fs::permissions(key, fs::perms::owner_read | fs::perms::owner_write);
+    }
     // Nothing remembered: every run of the restaurant plans (else the second is free).
     const char *logs = std::getenv("ENVDESIGN_FLOOD_LOGS");
     const std::string level = logs ? "debug" : "info";
@@ -173,6 +178,7 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     const std::string restaurant = source("examples/restaurant/c-two-tasks-t10.textproto");
     client::Options options;
     options.give_up_after_s = 60;
+    options.timeout_s = 30; // a starved request fails after 30 s, not when the flood ends
     options.key_file = key;
     nlohmann::json small, large, want_large;
     timed_design(restaurant, cluster, options, small); // warm: the coordinator is past discovery
@@ -187,7 +193,7 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     bus::Bus flood(
         cluster.url(),
         std::make_shared<spdlog::logger>("flood", std::make_shared<spdlog::sinks::null_sink_mt>()),
-        std::make_shared<const bus::KeyRing>(bus::load_key_file(key)));
+        keyed ? std::make_shared<const bus::KeyRing>(bus::load_key_file(key)) : nullptr);
     envdesign::spec_t never_ending = spec::bundle_spec(spec);
     for (int i = 0; i < 40; ++i) {
         envdesign::design_request_t request{};
@@ -255,6 +261,24 @@ TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
     EXPECT_LT(median(flooded_small), 2 * median(quiet_small) + 0.5) << cluster.logs();
     EXPECT_LE(median(flooded_large), 2 * median(quiet_large)) << cluster.logs();
     EXPECT_LT(most, 128 * 1024) << "KiB: the planner's resident memory passed --job-memory-mb";
+}
+
+TEST_F(Starvation, AFloodOfNeverEndingRequestsDoesNotStarveAnotherClient) {
+    flood_against_a_client(dir, spec, true);
+}
+
+// The same flood on an unkeyed bus: forty client names are forty clients. Disabled: it fails
+// on today's fair shares (issue 21). Each of the flood's names that has not run yet has less
+// usage than the well-behaved client (its quiet runs planned for seconds, halved every 10 s),
+// so the flood's names take the planners first, a quantum each, until every one of them is
+// much heavier than it. Quiet medians 0.024-0.047 s (restaurant) and 1.6-2.5 s (blocksworld
+// 14); under the flood, restaurant 79.6 s then 25.2 s (no client timeout), 30 / 9.8 / 30 s and
+// 30 / 10.4 / 22 s (timeout 30 s), blocksworld 71.7 s then 9.1 s, and every run at the 30 s
+// timeout; planner RSS 105-121 MiB (passes). By name the flood is 40 of 41 equal clients,
+// so the well-behaved one has 2/41 of the planners at best: within twice its quiet time needs
+// a unit the flood cannot multiply (the sending process, as on a keyed bus).
+TEST_F(Starvation, DISABLED_AFloodFromFortyNamesOnAnUnkeyedBusDoesNotStarveAnotherClient) {
+    flood_against_a_client(dir, spec, false);
 }
 
 // A refused request is not kept: 30 KB client names took the coordinator from 297 to 769 MB.
