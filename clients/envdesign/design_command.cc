@@ -6,8 +6,7 @@
 #include "progress.h"
 #include "result_format.h"
 
-#include "design/design_search.h"
-#include "design/relevance.h"
+#include "cluster/result_message.h"
 #include "spec/design_spec.h"
 
 #include <envdesign/client/client.h>
@@ -22,19 +21,17 @@
 namespace envdesign::cli {
 namespace {
 
-design::DesignSearchOptions search_options(const DesignFlags &flags,
-                                           const design::DesignProblem &problem) {
-    design::DesignSearchOptions options;
-    options.max_design_size =
-        flags.max_design_size >= 0 ? flags.max_design_size : problem.max_design_size;
-    double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem.time_limit_s;
-    options.deadline = design::Deadline::in(seconds);
-    options.batch_size = 4 * std::max(1, flags.workers);
-    options.method = flags.search == "exhaustive" ? design::SearchMethod::EXHAUSTIVE
-                                                  : design::SearchMethod::WITNESS;
-    options.ranking = flags.ranking;
-    options.ranking_all = flags.ranking_all;
-    return options;
+design::RunSettings run_settings(const DesignFlags &flags) {
+    design::RunSettings settings;
+    settings.time_limit_s = flags.time_limit_s;
+    settings.max_design_size = flags.max_design_size;
+    settings.method = flags.search == "exhaustive" ? design::SearchMethod::EXHAUSTIVE
+                                                   : design::SearchMethod::WITNESS;
+    settings.prune_relevant = flags.prune == "relevant";
+    settings.ranking = flags.ranking;
+    settings.ranking_all = flags.ranking_all;
+    settings.batch_size = 4 * std::max(1, flags.workers);
+    return settings;
 }
 
 // Set by SIGINT/SIGTERM only (a handler can reach nothing else); lock-free, so safe there.
@@ -63,17 +60,11 @@ int run_design_remote(const DesignFlags &flags) {
     options.key_file = flags.key_file;
     options.on_progress = client::stderr_progress();
     options.stop_requested = [] { return interrupted.load(); };
-    std::vector<std::string> warnings = remote_spec_warnings(flags.spec);
-    print_warnings(warnings);
     client::Result result = client::run_design_remote(flags.spec, flags.connect, options);
     if (result.status == "error")
         throw CommandError(result.exit_code, result.error);
-    auto unsolvable = remote_unsolvable_task_warnings(
-        flags.spec, result.json, design::Deadline::in(10).with_stop(&interrupted));
-    print_warnings(unsolvable);
-    warnings.insert(warnings.end(), unsolvable.begin(), unsolvable.end());
-    std::cout << (flags.json ? with_warnings(result.json, warnings) + "\n" : result.text)
-              << std::flush;
+    print_warnings(result.warnings);
+    std::cout << (flags.json ? result.json + "\n" : result.text) << std::flush;
     if (result.exit_code == 4)
         spdlog::warn("{}; the design is the best found",
                      interrupted ? "interrupted" : "the time limit stopped the search");
@@ -113,42 +104,27 @@ int run_design(const DesignFlags &flags) {
         return run_design_remote(flags);
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
     design::DesignProblem problem = spec::load_design_problem(flags.spec);
-    std::vector<std::string> warnings = problem.warnings;
-    print_warnings(warnings);
-    design::DesignSearchOptions options = search_options(flags, problem);
+    print_warnings(problem.warnings); // before a search that may take long
+    design::RunSettings settings = run_settings(flags);
     // Ctrl-C (or SIGTERM) stops the search as a time limit would: the best design so far.
     std::signal(SIGINT, on_interrupt);
     std::signal(SIGTERM, on_interrupt);
-    options.deadline = options.deadline.with_stop(&interrupted);
-    LocalRun run(problem, flags.workers, flags.heuristic);
-    if (flags.prune == "relevant")
-        options.relevant = [&](const design::Configuration &c) {
-            return design::relevant_modifications(problem, c, run.local().planner(),
-                                                  options.deadline);
-        };
+    settings.stop = &interrupted;
+    LocalRun local(problem, flags.workers, flags.heuristic);
     ProgressPrinter printer(stderr, isatty(fileno(stderr)));
-    design::DesignResult result;
+    design::DesignRun run;
     try {
-        result = design::search_design(problem, run.evaluator(), options,
-                                       [&](const design::SearchProgress &p) { printer.update(p); });
+        run = local.run(settings, [&](const design::SearchProgress &p) { printer.update(p); });
     } catch (const pddl::ParseError &) { // a modified model that does not ground
         std::cerr << "\n";
         throw;
     }
-    printer.finish(result);
-    auto unsolvable = unsolvable_task_warnings(problem, result, run.local().planner(),
-                                               design::Deadline::in(10).with_stop(&interrupted));
-    print_warnings(unsolvable);
-    warnings.insert(warnings.end(), unsolvable.begin(), unsolvable.end());
-    envdesign::design_result_t message = run.message(result, options.deadline);
-    if (flags.json) {
-        nlohmann::json out = client::result_json_value(message);
-        if (!warnings.empty())
-            out["warnings"] = warnings;
-        std::cout << client::json_text(out) << std::endl;
-    } else {
-        std::cout << client::result_text(message) << std::flush;
-    }
+    printer.finish(run.result);
+    print_warnings({run.warnings.begin() + problem.warnings.size(), run.warnings.end()});
+    envdesign::design_result_t message = cluster::result_message(problem, run);
+    std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
+              << std::flush;
+    const design::DesignResult &result = run.result;
     if (result.limit_reached)
         spdlog::warn("{}; the design is the best found",
                      interrupted ? "interrupted" : "the time limit stopped the search");

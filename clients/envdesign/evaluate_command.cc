@@ -4,6 +4,7 @@
 #include "local_run.h"
 #include "result_format.h"
 
+#include "cluster/result_message.h"
 #include "design/evaluate_design.h"
 #include "spec/design_spec.h"
 
@@ -58,7 +59,8 @@ int run_evaluate(const EvaluateFlags &flags) {
     LocalRun run(*problem, flags.workers, flags.heuristic);
     design::DesignResult result =
         design::evaluate_design(*problem, run.evaluator(), configuration, deadline);
-    envdesign::design_result_t message = run.message(result, deadline);
+    envdesign::design_result_t message =
+        cluster::result_message(*problem, run.explained(std::move(result), deadline));
     message.status = "evaluated";
     std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
               << std::flush;

@@ -1,11 +1,7 @@
 #include "local_run.h"
 
-#include "cluster/result_message.h"
-#include "design/design_explanation.h"
 #include "heuristics/heuristic.h"
 #include "service/number_flag.h"
-
-#include <algorithm>
 
 namespace envdesign::cli {
 
@@ -25,31 +21,26 @@ planning::PlannerOptions planner_options(const std::string &heuristic) {
     return options;
 }
 
-// The explanation evaluates a few designs the search may not have: within the search's time
-// limit, and at least a few seconds when the search used it up or was interrupted (Ctrl-C
-// prints soon, with what could be evaluated).
-design::Deadline explanation_deadline(const design::Deadline &search) {
-    constexpr double AT_LEAST_S = 5;
-    if (search.expired())
-        return design::Deadline::in(AT_LEAST_S);
-    if (!search.limited())
-        return {};
-    return design::Deadline::in(std::max(search.remaining_seconds(), AT_LEAST_S));
-}
-
 } // namespace
 
 LocalRun::LocalRun(const design::DesignProblem &problem, int workers, const std::string &heuristic)
     : problem_(problem), local_(problem, workers, planner_options(heuristic)),
       log_(problem, local_) {}
 
-envdesign::design_result_t LocalRun::message(const design::DesignResult &result,
-                                             const design::Deadline &search_deadline) {
-    if (!result.best)
-        return cluster::result_message(problem_, result, {});
-    design::DesignExplanation why = design::explain_design(
-        problem_, result, log_, &local_.planner(), explanation_deadline(search_deadline));
-    return cluster::result_message(problem_, result, {}, &why);
+design::DesignRun
+LocalRun::run(const design::RunSettings &settings,
+              const std::function<void(const design::SearchProgress &)> &progress) {
+    return design::run_design(problem_, log_, &local_.planner(), settings, progress);
+}
+
+design::DesignRun LocalRun::explained(design::DesignResult result,
+                                      const design::Deadline &deadline) {
+    design::DesignRun run;
+    run.result = std::move(result);
+    run.warnings = problem_.warnings;
+    run.explanation =
+        design::explain_answer(problem_, run.result, log_, &local_.planner(), deadline);
+    return run;
 }
 
 } // namespace envdesign::cli

@@ -1,13 +1,12 @@
 #pragma once
 // The in-process engine the local commands (design, evaluate, report) share: N planner
 // threads (LocalEvaluator) behind an EvaluationLog, so that every design evaluated in full
-// can be re-weighed by the explanation, and the result as the message the coordinator sends
-// (cluster/result_message.h), so that one formatter prints both paths.
+// can be re-weighed by the explanation. The commands turn its runs into the message the
+// coordinator sends (cluster/result_message.h), so that one formatter prints both paths.
 
-#include "design/design_search.h"
+#include "design/design_run.h"
 #include "design/evaluation_log.h"
 #include "design/local_evaluator.h"
-#include "envdesign/design_result_t.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -28,11 +27,13 @@ public:
     design::Evaluator &evaluator() { return log_; }
     design::LocalEvaluator &local() { return local_; }
 
-    // `result` with its explanation when it has a design. The explanation may evaluate a few
-    // designs (the chosen one minus one modification) until the search's deadline, or a few
-    // seconds past it when the search used it up.
-    envdesign::design_result_t message(const design::DesignResult &result,
-                                       const design::Deadline &search_deadline);
+    // One design run (design/design_run.h) on these planners: the search, the explanation
+    // of its answer and the warnings.
+    design::DesignRun run(const design::RunSettings &settings,
+                          const std::function<void(const design::SearchProgress &)> &progress = {});
+    // `result` (one design evaluated, not searched) explained as a run's answer is, with the
+    // spec's warnings.
+    design::DesignRun explained(design::DesignResult result, const design::Deadline &deadline);
 
 private:
     const design::DesignProblem &problem_;

@@ -7,6 +7,7 @@
 #include "report_floor.h"
 #include "report_html.h"
 
+#include "cluster/result_message.h"
 #include "design/configuration.h"
 #include "design/explicability.h"
 #include "pddl/parse_error.h"
@@ -60,21 +61,18 @@ int run_report(const ReportFlags &flags) {
     // Bad input throws pddl::ParseError: main() reports it (exit 2).
     std::optional<design::DesignProblem> problem = spec::load_design_problem(flags.spec);
     check_output_path(flags.output);
-    design::DesignSearchOptions options;
-    options.max_design_size = problem->max_design_size;
-    double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem->time_limit_s;
-    options.deadline = design::Deadline::in(seconds);
-    options.batch_size = 4 * flags.workers;
-    options.ranking = flags.ranking;
+    design::RunSettings settings;
+    settings.time_limit_s = flags.time_limit_s;
+    settings.batch_size = 4 * flags.workers;
+    settings.ranking = flags.ranking;
     LocalRun run(*problem, flags.workers, flags.heuristic);
     ProgressPrinter printer(stderr, isatty(fileno(stderr)));
     envdesign::design_result_t message;
     try {
-        design::DesignResult result =
-            design::search_design(*problem, run.evaluator(), options,
-                                  [&](const design::SearchProgress &p) { printer.update(p); });
-        printer.finish(result);
-        message = run.message(result, options.deadline);
+        design::DesignRun answer =
+            run.run(settings, [&](const design::SearchProgress &p) { printer.update(p); });
+        printer.finish(answer.result);
+        message = cluster::result_message(*problem, answer);
     } catch (const pddl::ParseError &) { // a modified model that does not ground
         std::cerr << "\n";
         throw;

@@ -359,6 +359,8 @@ def result_json(r):
     out["limit_reached"] = bool(r.limit_reached)
     if r.change:  # a re-evaluation: what changed and why
         out["change"] = r.change
+    if r.num_warnings:  # what the user should read beside the answer
+        out["warnings"] = list(r.warnings)
     return out
 
 

@@ -127,23 +127,22 @@ void Redesigner::set_probabilities(const Distribution &d) {
     }
 }
 
-design::DesignResult Redesigner::search(design::Evaluator &evaluator) {
-    design::DesignSearchOptions options;
-    options.max_design_size =
-        options_.max_design_size >= 0 ? options_.max_design_size : problem_->max_design_size;
-    options.deadline = design::Deadline::in(options_.time_limit_s >= 0 ? options_.time_limit_s
-                                                                       : problem_->time_limit_s);
-    options.batch_size = 4 * std::max(1, options_.workers);
+design::DesignRun Redesigner::search(design::Evaluator &evaluator, design::PlanCache *planner) {
+    design::RunSettings settings;
+    settings.max_design_size = options_.max_design_size;
+    settings.time_limit_s = options_.time_limit_s;
+    settings.batch_size = 4 * std::max(1, options_.workers);
     design::EvaluatorCounters before = evaluator.counters();
-    design::DesignResult result = design::search_design(*problem_, evaluator, options);
+    design::EvaluationLog log(*problem_, evaluator);
+    design::DesignRun run = design::run_design(*problem_, log, planner, settings);
     // The evaluator's counters run over every search; report this one's.
-    auto &c = result.counters.evaluator;
+    auto &c = run.result.counters.evaluator;
     c.task_evaluations -= before.task_evaluations;
     c.planner_runs -= before.planner_runs;
     c.cache_hits -= before.cache_hits;
     c.groundings_skipped -= before.groundings_skipped;
     c.planner_seconds -= before.planner_seconds;
-    return result;
+    return run;
 }
 
 Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> &new_tasks) {
@@ -162,7 +161,7 @@ Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> 
     set_probabilities(d);
     Redesign out;
     try {
-        out.result = search(*stored_);
+        static_cast<design::DesignRun &>(out) = search(*stored_, &local_->planner());
     } catch (const pddl::ParseError &e) {
         if (added.empty())
             throw;
@@ -173,7 +172,7 @@ Redesign Redesigner::redesign(const Distribution &d, const std::vector<NewTask> 
         }
         added.clear();
         set_probabilities(d);
-        out.result = search(*stored_);
+        static_cast<design::DesignRun &>(out) = search(*stored_, &local_->planner());
     }
     out.change = describe(out, d_before, added, refused);
     out.change.stored_answers = stored_->stored_answers() - stored_before;
@@ -191,7 +190,7 @@ std::optional<Redesign> Redesigner::reweigh(const Distribution &d) {
     long long stored_before = store_only_->stored_answers();
     set_probabilities(d);
     Redesign out;
-    out.result = search(*store_only_);
+    static_cast<design::DesignRun &>(out) = search(*store_only_, nullptr);
     // Not optimal: a configuration it needed was refused (or the deadline passed), so its
     // best is not proven; the design in force stays the one proven for d_before.
     if (!out.result.optimal || !out.result.best) {

@@ -26,7 +26,7 @@
 
 #include "arrivals/distribution.h"
 #include "arrivals/tracker.h"
-#include "design/design_search.h"
+#include "design/design_run.h"
 #include "design/local_evaluator.h"
 #include "design/stored_evaluator.h"
 
@@ -70,8 +70,9 @@ struct DesignChange {
 // Throws pddl::ParseError, the text's position named "new-task:NAME:LINE:COL".
 design::DesignTask parse_new_task(const design::DesignProblem &problem, const NewTask &task);
 
-struct Redesign {
-    design::DesignResult result; // counters are this redesign's own
+// A design run (result, explanation, warnings; the result's counters are this redesign's own)
+// and what changed.
+struct Redesign : design::DesignRun {
     DesignChange change;
 };
 
@@ -105,7 +106,8 @@ private:
     std::optional<std::string> add_task(const NewTask &task);
     void remove_task(const std::string &name);
     void set_probabilities(const Distribution &d);
-    design::DesignResult search(design::Evaluator &evaluator);
+    // One design run through `evaluator`; `planner` (null: none) plans the explanation.
+    design::DesignRun search(design::Evaluator &evaluator, design::PlanCache *planner);
     double objective_of(const design::Configuration &configuration) const;
     DesignChange describe(const Redesign &redesign, const Distribution &d_before,
                           const std::vector<std::string> &added,

@@ -96,8 +96,7 @@ void LocalRedesigns::reweigh(const Job &job) {
             answer.design = {out->change.after_names, out->change.objective_after,
                              "re-weighted: " + out->change.explanation, job.request_id};
             if (answer.changed) {
-                envdesign::design_result_t message =
-                    cluster::result_message(r.problem(), out->result, {});
+                envdesign::design_result_t message = cluster::result_message(r.problem(), *out);
                 message.change = answer.design.last_change;
                 message.utime = bus::now_utime();
                 message.request_id = job.request_id;
@@ -124,7 +123,7 @@ void LocalRedesigns::redesign(const Job &job) {
     Answer answer{id, job.request_id, std::nullopt, {}};
     try {
         arrivals::Redesign out = r.redesign(job.request.estimate, job.request.new_tasks);
-        message = cluster::result_message(r.problem(), out.result, {});
+        message = cluster::result_message(r.problem(), out);
         message.change = out.change.explanation + "; " + arrivals::describe(job.request);
         answer.design = {out.change.after_names, out.change.objective_after, out.change.explanation,
                          job.request_id};

@@ -6,9 +6,8 @@
 #include "cluster/lcm_evaluator.h"
 #include "cluster/spec_chunks.h"
 #include "cluster/wire.h"
-#include "design/design_explanation.h"
+#include "design/design_run.h"
 #include "design/evaluation_log.h"
-#include "design/relevance.h"
 #include "design/stored_evaluator.h"
 #include "pddl/parse_error.h"
 #include "spec/spec_message.h"
@@ -21,16 +20,6 @@ namespace {
 
 using envdesign::design_progress_t;
 using envdesign::design_request_t;
-
-// The explanation evaluates a few designs the search may not have (the chosen design minus
-// one modification): within the search's deadline, and at least a few seconds past it so
-// that a search stopped by its limit is still explained.
-design::Deadline explanation_deadline(const design::Deadline &search) {
-    constexpr double AT_LEAST_S = 5;
-    if (!search.limited())
-        return {};
-    return design::Deadline::in(std::max(search.remaining_seconds(), AT_LEAST_S));
-}
 
 } // namespace
 
@@ -118,19 +107,9 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
         std::lock_guard lock(mutex_);
         evaluator_ = &evaluator;
     }
-    design::DesignSearchOptions options = this->options(problem);
     planning::PlannerOptions planner;
     planner.heuristic = heuristic_kind(request_.heuristic);
-    design::PlanCache relevance_cache(planner); // --prune relevant plans on the coordinator
-    options.method = request_.search == design_request_t::SEARCH_EXHAUSTIVE
-                         ? design::SearchMethod::EXHAUSTIVE
-                         : design::SearchMethod::WITNESS;
-    if (request_.prune == design_request_t::PRUNE_RELEVANT)
-        options.relevant = [&](const design::Configuration &c) {
-            return cancelled_ ? std::vector<int>{}
-                              : design::relevant_modifications(problem, c, relevance_cache,
-                                                               options.deadline);
-        };
+    design::PlanCache local_planner(planner); // --prune relevant, the explanation's plans
     auto on_progress = [&](const design::SearchProgress &p) {
         std::lock_guard lock(mutex_);
         progress_.done = p.done;
@@ -155,13 +134,9 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
         });
     design::Evaluator &inner = stored ? static_cast<design::Evaluator &>(*stored) : evaluator;
     design::EvaluationLog searched(problem, inner); // kept for the explanation's break-even
-    design::DesignResult result;
-    std::optional<design::DesignExplanation> explanation;
+    design::DesignRun run;
     try {
-        result = design::search_design(problem, searched, options, on_progress);
-        if (result.best && !cancelled_)
-            explanation = design::explain_design(problem, result, searched, &relevance_cache,
-                                                 explanation_deadline(options.deadline));
+        run = design::run_design(problem, searched, &local_planner, settings(), on_progress);
     } catch (...) {
         std::lock_guard lock(mutex_);
         evaluator_ = nullptr;
@@ -182,22 +157,24 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     transport.stored_answers = stored ? stored->stored_answers() : 0;
     if (context_.stores)
         context_.stores->trim();
-    finish(result_message(problem, result, transport, explanation ? &*explanation : nullptr));
+    finish(result_message(problem, run, transport));
 }
 
-design::DesignSearchOptions RequestRun::options(const design::DesignProblem &problem) const {
-    design::DesignSearchOptions options;
-    options.max_design_size =
-        request_.max_design_size >= 0 ? request_.max_design_size : problem.max_design_size;
-    options.ranking = request_.ranking;
-    options.ranking_all = request_.ranking_all == 1;
-    double seconds = request_.time_limit_s >= 0 ? request_.time_limit_s : problem.time_limit_s;
-    double cap = context_.max_time_limit_s;
-    if (cap > 0 && (seconds <= 0 || seconds > cap))
-        seconds = cap; // 0 was "no limit"
-    options.deadline = design::Deadline::in(seconds);
-    options.batch_size = std::max(8, 4 * context_.router.pool().capacity());
-    return options;
+design::RunSettings RequestRun::settings() const {
+    design::RunSettings settings;
+    settings.time_limit_s = request_.time_limit_s;
+    settings.max_time_limit_s = context_.max_time_limit_s;
+    settings.max_design_size = request_.max_design_size;
+    settings.method = request_.search == design_request_t::SEARCH_EXHAUSTIVE
+                          ? design::SearchMethod::EXHAUSTIVE
+                          : design::SearchMethod::WITNESS;
+    settings.prune_relevant = request_.prune == design_request_t::PRUNE_RELEVANT;
+    settings.ranking = request_.ranking;
+    settings.ranking_all = request_.ranking_all == 1;
+    settings.batch_size = std::max(8, 4 * context_.router.pool().capacity());
+    settings.stop = &cancelled_;           // a cancelled request stops as at its deadline
+    settings.explain_when_stopped = false; // and nobody waits for its explanation
+    return settings;
 }
 
 void RequestRun::set_state(std::int8_t state) {

@@ -9,7 +9,7 @@
 #include "cluster/job_router.h"
 #include "cluster/spec_library.h"
 #include "design/design_problem.h"
-#include "design/design_search.h"
+#include "design/design_run.h"
 #include "envdesign/design_progress_t.hpp"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
@@ -56,7 +56,7 @@ public:
 private:
     void run();
     void search(const design::DesignProblem &problem, const std::string &hash);
-    design::DesignSearchOptions options(const design::DesignProblem &problem) const;
+    design::RunSettings settings() const; // the request's overrides of its spec's
     void set_state(std::int8_t state);
     void finish(envdesign::design_result_t result);
 

@@ -75,12 +75,21 @@ std::string no_finite_design(const design::DesignProblem &problem,
     return tasks.empty() ? why : why + ": no design gives task(s) " + tasks + " a finite IE";
 }
 
+std::vector<std::string> warnings_message(const std::vector<std::string> &warnings) {
+    if (warnings.size() <= MAX_WARNINGS)
+        return warnings;
+    std::vector<std::string> out(warnings.begin(), warnings.begin() + MAX_WARNINGS - 1);
+    out.push_back("... and " + std::to_string(warnings.size() - out.size()) + " more warnings");
+    return out;
+}
+
 } // namespace
 
 envdesign::design_result_t result_message(const design::DesignProblem &problem,
-                                          const design::DesignResult &result,
-                                          const TransportCounters &transport,
-                                          const design::DesignExplanation *explanation) {
+                                          const design::DesignRun &run,
+                                          const TransportCounters &transport) {
+    const design::DesignResult &result = run.result;
+    const design::DesignExplanation *explanation = run.explanation ? &*run.explanation : nullptr;
     envdesign::design_result_t m{};
     // Proven (the search is exact and complete) like `plan` on an unsolvable problem: exit 3.
     bool unsolvable = result.optimal && !result.limit_reached && result.best &&
@@ -112,6 +121,8 @@ envdesign::design_result_t result_message(const design::DesignProblem &problem,
         m.has_explanation ? explanation_message(problem, *explanation) : empty_explanation();
     m.ranking = ranking_message(problem, result, explanation);
     m.ranking_size = static_cast<std::int16_t>(m.ranking.size());
+    m.warnings = warnings_message(run.warnings);
+    m.num_warnings = static_cast<std::int16_t>(m.warnings.size());
     return m;
 }
 

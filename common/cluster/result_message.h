@@ -3,8 +3,7 @@
 // SPEC.md's JSON): the coordinator publishes it, and the local CLI builds the same message,
 // so that one formatter (clients/cpp, result_format.h) prints both.
 
-#include "design/design_explanation.h"
-#include "design/design_search.h"
+#include "design/design_run.h"
 #include "envdesign/design_result_t.hpp"
 
 #include <string>
@@ -22,12 +21,15 @@ struct TransportCounters {
     long long stored_answers = 0;
 };
 
-// design_result_t of a finished search (header fields left to the sender). With an
-// `explanation` of result.best, it and the ranking's design points travel too.
+// design_result_t of a finished run (header fields left to the sender): the result, its
+// warnings and, when the run explained it, the explanation and the ranking's design points.
 envdesign::design_result_t result_message(const design::DesignProblem &problem,
-                                          const design::DesignResult &result,
-                                          const TransportCounters &transport,
-                                          const design::DesignExplanation *explanation = nullptr);
+                                          const design::DesignRun &run,
+                                          const TransportCounters &transport = {});
+
+// At most this many warnings travel (the message counts them in an int16); a last line says
+// how many more there were.
+constexpr std::size_t MAX_WARNINGS = 1000;
 
 // design_result_t of a request that failed: `exit_code` 2 (bad input) or 1.
 envdesign::design_result_t error_result(int exit_code, const std::string &message);

@@ -38,4 +38,30 @@ std::vector<UnsolvableTask> unsolvable_tasks(const DesignProblem &problem,
     return found;
 }
 
+namespace {
+
+std::string reason_text(UnsolvableReason reason) {
+    switch (reason) {
+    case UnsolvableReason::ROBOT_HAS_NO_PLAN:
+        return "P_R has no plan (the robot cannot do the task)";
+    case UnsolvableReason::HUMAN_HAS_NO_PLAN:
+        return "P_H has no plan (observers believe the task impossible)";
+    case UnsolvableReason::NO_PLAN_VALID_IN_BOTH:
+        return "no plan is valid in both P_R and P_H (P_mod has no plan)";
+    }
+    return "unknown";
+}
+
+} // namespace
+
+std::vector<std::string> unsolvable_task_warnings(const DesignProblem &problem,
+                                                  const std::vector<TaskExplicability> &baseline,
+                                                  PlanCache &planner, const Deadline &deadline) {
+    std::vector<std::string> lines;
+    for (const UnsolvableTask &u : unsolvable_tasks(problem, baseline, planner, deadline))
+        lines.push_back("task '" + problem.tasks[u.task].name +
+                        "' has infinite IE in the unmodified models: " + reason_text(u.reason));
+    return lines;
+}
+
 } // namespace envdesign::design

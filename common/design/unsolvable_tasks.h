@@ -15,6 +15,7 @@
 #include "design/plan_cache.h"
 #include "design/task_evaluation.h"
 
+#include <string>
 #include <vector>
 
 namespace envdesign::design {
@@ -32,5 +33,11 @@ struct UnsolvableTask {
 std::vector<UnsolvableTask> unsolvable_tasks(const DesignProblem &problem,
                                              const std::vector<TaskExplicability> &baseline,
                                              PlanCache &planner, const Deadline &deadline);
+
+// The same tasks as warning lines: "task 'NAME' has infinite IE in the unmodified models:
+// REASON", the reason worded for a user.
+std::vector<std::string> unsolvable_task_warnings(const DesignProblem &problem,
+                                                  const std::vector<TaskExplicability> &baseline,
+                                                  PlanCache &planner, const Deadline &deadline);
 
 } // namespace envdesign::design

@@ -41,6 +41,10 @@ TEST(Redesign, FirstRunIsTheSpecsDesign) {
     EXPECT_FALSE(first.change.changed);
     EXPECT_TRUE(std::isnan(first.change.objective_before));
     EXPECT_GT(first.change.planner_runs, 0);
+    // The run explains its answer as the CLI's and the coordinator's do (design_run.h).
+    ASSERT_TRUE(first.explanation);
+    EXPECT_EQ(first.explanation->chosen.configuration, first.result.best->ranked.configuration);
+    EXPECT_EQ(first.explanation->tasks.size(), r.problem().tasks.size());
 }
 
 // A bridge restarted on the same state directory (--state-dir) re-weights what its

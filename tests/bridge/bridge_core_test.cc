@@ -208,6 +208,10 @@ TEST(BridgeCore, ScriptedDriftGivesTheKnownEstimateAndTheOptimalDesign) {
     EXPECT_EQ(rig.results[1].design, at_01.design);
     EXPECT_NEAR(rig.results[1].best.objective, 55.949, 1e-3);
     EXPECT_NEAR(rig.results[1].best.objective, at_01.objective, 1e-9);
+    // A local re-design is explained as the coordinator's answers are (design/design_run.h).
+    EXPECT_TRUE(rig.results[0].has_explanation);
+    ASSERT_TRUE(rig.results[1].has_explanation);
+    EXPECT_EQ(rig.results[1].explanation.num_tasks, 2);
     rig.settle();
     ASSERT_TRUE(rig.last_estimate);
     EXPECT_EQ(rig.last_estimate->estimated, 10);

@@ -20,12 +20,11 @@ envdesign::design_result_t explained_restaurant() {
         std::string(ENVDESIGN_TEST_DATA_ROOT) + "/examples/restaurant/c-two-tasks-t10.textproto");
     design::LocalEvaluator local(problem, 1);
     design::EvaluationLog log(problem, local);
-    design::DesignSearchOptions options;
-    options.ranking = 3;
-    design::DesignResult result = design::search_design(problem, log, options);
-    design::DesignExplanation why =
-        design::explain_design(problem, result, log, &local.planner(), {});
-    return result_message(problem, result, {}, &why);
+    design::RunSettings settings;
+    settings.time_limit_s = 0;
+    settings.max_design_size = 0; // every size, as the message's reference
+    settings.ranking = 3;
+    return result_message(problem, design::run_design(problem, log, &local.planner(), settings));
 }
 
 // What --connect prints is what the local run prints: the explanation and the ranking

@@ -85,6 +85,17 @@ class PythonClient(unittest.TestCase):
         self.check(os.path.join(ROOT, "examples", "restaurant", "c-two-tasks-t10.textproto"))
         self.check(os.path.join(ROOT, "tests", "e2e", "data", "warehouse-small", "signs-1.textproto"))
 
+    def test_warnings_reach_the_python_client(self):
+        # They travel in design_result_t: the same lines as `envdesign design --json` prints.
+        spec = os.path.join(ROOT, "tests", "data", "usability", "unsolvable-tasks.textproto")
+        result, _ = envdesign_client.design_result(spec, URL, give_up_after_s=10)
+        cli = subprocess.run([os.path.join(BUILD, "bin", "envdesign"), "design", spec, "--json"],
+                             capture_output=True, text=True)
+        self.assertEqual(cli.returncode, 3, cli.stderr)  # proven: no design has a finite objective
+        want = json.loads(cli.stdout)
+        self.assertEqual(len(result["warnings"]), 3, result)
+        self.assertEqual(result["warnings"], want["warnings"])
+
     def test_spec_larger_than_datagrams(self):
         copy = os.path.join(self.work, "big")
         shutil.copytree(os.path.join(ROOT, "examples", "restaurant"), copy)

@@ -186,6 +186,7 @@ private:
         out.status = r.status;
         out.json = result_json(r);
         out.text = result_text(r);
+        out.warnings = r.warnings;
         return out;
     }
 

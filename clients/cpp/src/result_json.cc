@@ -204,6 +204,8 @@ json result_json_value(const envdesign::design_result_t &r) {
         for (const auto &p : r.ranking)
             out["ranking"].push_back(point_json(p));
     }
+    if (!r.warnings.empty()) // what the user should read beside the answer
+        out["warnings"] = r.warnings;
     return out;
 }
 

@@ -21,6 +21,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 // The library exports only what this header declares.
 #define ENVDESIGN_CLIENT_API __attribute__((visibility("default")))
@@ -70,6 +71,9 @@ struct Result {
     std::string error;  // status "error": the message ("FILE:LINE:COL: error: ...")
     std::string json;   // SPEC.md's JSON result, one line (empty for "error")
     std::string text;   // what `envdesign design` prints without --json
+    // Lines to read beside the answer (also in `json`): the spec's ("FILE:LINE:COL:
+    // warning: ..."), and tasks no design can make explicable, with the reason.
+    std::vector<std::string> warnings;
 };
 
 // Designs `spec_path` on the coordinator at `lcm_url` (empty: LCM's default URL). Never
