@@ -44,14 +44,26 @@ YAML::Node choose_level(const YamlFields &yaml, const YAML::Node &root,
         if (!levels[*wanted].IsDefined())
             yaml.fail(levels, "no level '" + *wanted + "'; the levels are: " + listed(names));
         name = *wanted;
-        return levels[*wanted];
-    }
-    if (names.size() != 1)
+    } else if (names.size() != 1) {
         yaml.fail(levels,
                   std::to_string(names.size()) +
                       " levels and none chosen (--level): the levels are: " + listed(names));
-    name = names.front();
+    } else {
+        name = names.front();
+    }
+    if (std::string why = name_problem(name); !why.empty())
+        yaml.fail(levels, "the level's name " + why);
     return levels[name];
+}
+
+// A place's label goes into the spec's and problems' comments and floor.json.
+void check_place_names(const YamlFields &yaml, const YAML::Node &level,
+                       const std::vector<Place> &places) {
+    YAML::Node list = level["vertices"];
+    for (const Place &p : places)
+        if (std::string why = name_problem(p.name); !why.empty())
+            yaml.fail(list[p.vertex][3],
+                      "the name of vertex " + std::to_string(p.vertex) + " " + why);
 }
 
 std::vector<Point> read_vertices(const YamlFields &yaml, const YAML::Node &level,
@@ -240,6 +252,7 @@ Floor read_level(const YamlFields &yaml, const YAML::Node &root,
     check_bounds(yaml, level, vertices, pixels, floor.scale);
     floor.lanes = robot_edges(lanes, options.graph);
     floor.places = places_of(floor.lanes, vertices, names, pixels, floor.scale);
+    check_place_names(yaml, level, floor.places);
     if (floor.places.size() > MAX_PLACES)
         yaml.fail(level, std::to_string(floor.places.size()) + " places, more than the " +
                              std::to_string(MAX_PLACES) + " a floor may have");

@@ -28,6 +28,9 @@ inline constexpr std::size_t MAX_MAP_FILE_BYTES = 8u << 20;
 // Sight lines (unordered pairs) a floor may have: dense places and a long --sight make
 // O(places^2) of them, each a line of every task's problems.
 inline constexpr std::size_t MAX_SIGHT_LINES = 500000;
+// Walls (and occupied-map cells) near a pair of places, summed over the pairs within sight:
+// the work of finding the sight lines, a few seconds at most.
+inline constexpr std::size_t MAX_WALL_TESTS = 20000000;
 // Tasks x edges of both models: the lines the problem files would hold.
 inline constexpr std::size_t MAX_TASK_EDGES = 4000000;
 
@@ -70,5 +73,13 @@ struct Floor {
 
 // "v<vertex>".
 std::string object_name(int vertex);
+
+// A name from a map or zone file (a place's label, a level, a zone's id) is written into the
+// spec, the problems' comments and floor.json: at most this many bytes of UTF-8 text.
+inline constexpr std::size_t MAX_NAME_BYTES = 256;
+
+// Why `name` cannot be one ("is not UTF-8 text", "holds a control character", "is longer
+// than ..."); empty if it can.
+std::string name_problem(const std::string &name);
 
 } // namespace envdesign::floor

@@ -24,16 +24,18 @@ public:
 
     // The walls near segment s (s no longer than a cell), each once.
     std::vector<int> near(const Segment &s) const {
-        std::set<int> found;
+        std::vector<int> found;
         // Where s meets a wall lies within one cell of either endpoint's cell.
         for (const Point &p : {s.a, s.b})
             for (long long dx = -1; dx <= 1; ++dx)
                 for (long long dy = -1; dy <= 1; ++dy) {
                     auto it = cells_.find(key(cell_of(p.x) + dx, cell_of(p.y) + dy));
                     if (it != cells_.end())
-                        found.insert(it->second.begin(), it->second.end());
+                        found.insert(found.end(), it->second.begin(), it->second.end());
                 }
-        return {found.begin(), found.end()};
+        std::sort(found.begin(), found.end());
+        found.erase(std::unique(found.begin(), found.end()), found.end());
+        return found;
     }
 
 private:
@@ -60,12 +62,16 @@ private:
 };
 
 // A cell no smaller than the sight distance, and coarse enough that no wall of a floor
-// within MAX_COORDINATE_M is entered in more than a few thousand cells.
+// within MAX_COORDINATE_M is entered in more than a few thousand cells, and all the walls
+// together in a few million (issue 21: ten thousand walls across the whole floor, a 64 KB
+// map, were each entered in thousands of cells: minutes and gigabytes).
 double cell_size(const std::vector<Segment> &walls, double sight_m) {
-    double extent = 0;
-    for (const auto &w : walls)
+    double extent = 0, total = 0;
+    for (const auto &w : walls) {
         extent = std::max(extent, distance(w.a, w.b));
-    return std::max({sight_m, 1.0, extent / 512});
+        total += distance(w.a, w.b);
+    }
+    return std::max({sight_m, 1.0, extent / 512, total / 100000});
 }
 
 bool blocked(const Segment &raw, const std::vector<int> &near,
@@ -76,11 +82,18 @@ bool blocked(const Segment &raw, const std::vector<int> &near,
     return false;
 }
 
+// About how many cells of `grid` the segment visits (OccupancyGrid::blocks), at most the
+// grid's width plus height.
+std::size_t cells_crossed(const OccupancyGrid &grid, const Segment &s) {
+    double span = (std::abs(s.b.x - s.a.x) + std::abs(s.b.y - s.a.y)) / grid.resolution;
+    return static_cast<std::size_t>(std::min(span, double(grid.width) + grid.height)) + 2;
+}
+
 } // namespace
 
 std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vector<Segment> &walls,
                               const std::vector<Segment> &walls_raw, double sight_m,
-                              const OccupancyGrid *grid) {
+                              const OccupancyGrid *grid, std::size_t max_wall_tests) {
     WallGrid walls_near(walls, cell_size(walls, sight_m));
     std::vector<std::size_t> by_x(places.size());
     for (std::size_t i = 0; i < by_x.size(); ++i)
@@ -88,6 +101,7 @@ std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vecto
     std::sort(by_x.begin(), by_x.end(),
               [&](std::size_t a, std::size_t b) { return places[a].at.x < places[b].at.x; });
     std::vector<Edge> lines;
+    std::size_t tests = 0; // wall tests so far
     for (std::size_t i = 0; i < by_x.size(); ++i) {
         const Place &p = places[by_x[i]];
         for (std::size_t j = i + 1; j < by_x.size(); ++j) {
@@ -96,7 +110,13 @@ std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vecto
                 break;
             if (distance(p.at, q.at) > sight_m)
                 continue;
-            if (blocked({p.raw, q.raw}, walls_near.near({p.at, q.at}), walls_raw))
+            std::vector<int> near = walls_near.near({p.at, q.at});
+            tests += near.size() + 1 + (grid ? cells_crossed(*grid, {p.at, q.at}) : 0);
+            if (tests > max_wall_tests)
+                throw FloorError("more than " + std::to_string(max_wall_tests) +
+                                 " tests of a sight line against a wall: the places and walls "
+                                 "are too dense for the sight distance (lower --sight)");
+            if (blocked({p.raw, q.raw}, near, walls_raw))
                 continue;
             if (grid && grid->blocks({p.at, q.at}))
                 continue;

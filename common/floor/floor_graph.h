@@ -36,9 +36,12 @@ std::map<int, bool> robot_reachable(const FloorGraph &graph, int from);
 
 // The sight lines among `places` (unordered pairs, vertex numbers, first < second) no wall
 // of `walls_raw` and no occupied cell of `grid` (if any) blocks; walls are looked up in a
-// grid of cells so that a large floor stays fast.
+// grid of cells so that a large floor stays fast. Throws FloorError beyond MAX_SIGHT_LINES
+// lines, or when the walls and cells near the pairs within sight, summed, are more than
+// `max_wall_tests`.
 std::vector<Edge> sight_lines(const std::vector<Place> &places, const std::vector<Segment> &walls,
                               const std::vector<Segment> &walls_raw, double sight_m,
-                              const OccupancyGrid *grid = nullptr);
+                              const OccupancyGrid *grid = nullptr,
+                              std::size_t max_wall_tests = MAX_WALL_TESTS);
 
 } // namespace envdesign::floor

@@ -6,6 +6,8 @@
 #include "spec_text.h"
 #include "zones.h"
 
+#include "pddl/input_file.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -66,18 +68,32 @@ Floor read_floor(const ImportOptions &o) {
 
 FloorProblem build_floor_problem(const ImportOptions &options, std::vector<std::string> &warnings) {
     check_options(options);
+    Floor floor = read_floor(options);
+    InputTexts texts;
+    if (options.tasks_csv)
+        texts.tasks_csv = pddl::read_input_file(*options.tasks_csv);
+    if (options.zones_json && options.candidates.zones)
+        texts.zones_json = pddl::read_input_file(*options.zones_json, MAX_MAP_FILE_BYTES);
+    return assemble_floor_problem(std::move(floor), options, texts, warnings);
+}
+
+FloorProblem assemble_floor_problem(Floor floor, const ImportOptions &options,
+                                    const InputTexts &texts, std::vector<std::string> &warnings) {
+    check_options(options);
     FloorProblem p;
-    p.floor = read_floor(options);
+    p.floor = std::move(floor);
     p.sight_m = options.sight_m;
     p.graph = build_floor_graph(p.floor, options.sight_m);
     std::vector<FloorTask> tasks =
-        options.tasks_csv ? read_tasks_csv(*options.tasks_csv, p.floor) : default_tasks(p.floor);
+        texts.tasks_csv
+            ? parse_tasks_csv(*texts.tasks_csv, options.tasks_csv.value_or("tasks.csv"), p.floor)
+            : default_tasks(p.floor);
     p.tasks = drop_unreachable(tasks, p.floor, p.graph, warnings);
     if (p.tasks.empty())
         throw FloorError("no task left: the robot's lanes connect none of the task pairs");
     std::vector<Zone> zones;
-    if (options.zones_json && options.candidates.zones)
-        zones = read_zones(*options.zones_json, warnings);
+    if (texts.zones_json && options.candidates.zones)
+        zones = parse_zones(*texts.zones_json, options.zones_json.value_or("zones.json"), warnings);
     p.candidates = make_candidates(p.floor, p.graph, zones, options.candidates, warnings);
     std::size_t edges = p.graph.robot.size() + p.graph.human_only.size();
     if (p.tasks.size() * edges > MAX_TASK_EDGES)

@@ -54,6 +54,19 @@ struct ImportReport {
 // Reads, builds and checks the problem without writing anything.
 FloorProblem build_floor_problem(const ImportOptions &options, std::vector<std::string> &warnings);
 
+// The texts of the task and zone files, already read (tests, the fuzz target): nullopt for
+// a file not given. Errors name them by options.tasks_csv and options.zones_json.
+struct InputTexts {
+    std::optional<std::string> tasks_csv;
+    std::optional<std::string> zones_json;
+};
+
+// build_floor_problem from a floor already read (with its occupancy grid, if any): the same
+// checks of the options, the same graph, tasks, candidates and bounds. options.map,
+// options.tasks_csv, options.zones_json and options.occupancy_yaml are not opened.
+FloorProblem assemble_floor_problem(Floor floor, const ImportOptions &options,
+                                    const InputTexts &texts, std::vector<std::string> &warnings);
+
 // build_floor_problem, then writes the files into options.out_dir (created if missing;
 // files of the same names are replaced).
 ImportReport import_floor(const ImportOptions &options);

@@ -133,8 +133,16 @@ GreyImage parse_pgm(const std::string &bytes, const std::string &path) {
 }
 
 OccupancyGrid read_occupancy_map(const std::string &yaml_path) {
+    return parse_occupancy_map(
+        pddl::read_input_file(yaml_path), yaml_path,
+        [](const std::string &image) { return pddl::read_input_file(image); });
+}
+
+OccupancyGrid
+parse_occupancy_map(const std::string &yaml_text, const std::string &yaml_path,
+                    const std::function<std::string(const std::string &)> &read_image) {
     YamlFields yaml(yaml_path);
-    YAML::Node root = yaml.load(pddl::read_input_file(yaml_path));
+    YAML::Node root = yaml.load(yaml_text);
     if (!root.IsMap())
         throw pddl::ParseError({yaml_path, 1, 1}, "a map is a YAML map with 'image'");
     OccupancyGrid grid;
@@ -143,7 +151,7 @@ OccupancyGrid read_occupancy_map(const std::string &yaml_path) {
     std::filesystem::path image_path = yaml.text(yaml.required(root, "image", "the map"), "image");
     if (image_path.is_relative())
         image_path = std::filesystem::path(yaml_path).parent_path() / image_path;
-    GreyImage image = parse_pgm(pddl::read_input_file(image_path.string()), image_path.string());
+    GreyImage image = parse_pgm(read_image(image_path.string()), image_path.string());
     grid.width = image.width;
     grid.height = image.height;
     grid.occupied.resize(image.grey.size());

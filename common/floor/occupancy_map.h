@@ -10,6 +10,7 @@
 #include "geometry.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,13 @@ struct OccupancyGrid {
 // FILE:LINE:COL for a fault in either; a mode other than trinary, a rotated origin (yaw
 // != 0) and images of other formats are refused.
 OccupancyGrid read_occupancy_map(const std::string &yaml_path);
+
+// read_occupancy_map of the text `yaml_text` (named `yaml_path` in errors); `read_image` gives
+// the bytes of the image its `image` names (a path relative to the YAML made absolute as
+// read_occupancy_map does) or throws pddl::ParseError.
+OccupancyGrid
+parse_occupancy_map(const std::string &yaml_text, const std::string &yaml_path,
+                    const std::function<std::string(const std::string &)> &read_image);
 
 // The PGM image in `bytes` (for tests): width, height, and the grey values row by row from
 // the top, scaled to 0..255.

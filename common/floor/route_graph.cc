@@ -42,13 +42,20 @@ Node read_node(const JsonFile &file, std::size_t i, const json &feature) {
     Node n;
     n.id = node_id(file, props.contains("id") ? props["id"] : json(), {"features", i, "properties"},
                    "node " + std::to_string(i) + "'s id");
-    const json &c = feature["geometry"]["coordinates"];
-    if (!c.is_array() || c.size() < 2)
+    // geometry is an object (geometry_type): `coordinates` may still be missing, and a const
+    // json's operator[] of a missing key is undefined.
+    const json &geometry = feature["geometry"];
+    if (!geometry.contains("coordinates") || !geometry["coordinates"].is_array() ||
+        geometry["coordinates"].size() < 2)
         file.fail({"features", i, "geometry"},
                   "node " + std::to_string(n.id) + " has no coordinates [x, y]");
+    const json &c = geometry["coordinates"];
     n.at = {file.coordinate(c[0], {"features", i, "geometry", "coordinates", std::size_t(0)}, "x"),
             file.coordinate(c[1], {"features", i, "geometry", "coordinates", std::size_t(1)}, "y")};
     n.name = node_name(props);
+    if (std::string why = name_problem(n.name); !why.empty())
+        file.fail({"features", i, "properties"},
+                  "the name of node " + std::to_string(n.id) + " " + why);
     return n;
 }
 

@@ -67,8 +67,9 @@ public:
         auto [ptr, ec] = std::from_chars(f.text.data(), end, w);
         if (ec != std::errc() || ptr != end || f.text.empty())
             fail(line, f.column, "weight '" + f.text + "' is not a number");
-        if (!(w > 0) || !std::isfinite(w))
-            fail(line, f.column, "weight " + f.text + " is not a finite number > 0");
+        if (!(w > 0) || !(w <= MAX_TASK_WEIGHT)) // their sum must be finite
+            fail(line, f.column,
+                 "weight " + f.text + " is not a finite number > 0 and at most 1e12");
         return w;
     }
 

@@ -15,6 +15,11 @@
 
 namespace envdesign::floor {
 
+// A task's weight, at most: the spec's range for a task's weight (TASK_WEIGHT,
+// design/numbers.h), so that the sum of MAX_TASKS of them is finite (issue 21: two weights of
+// 1.7e308 summed to inf, and every probability written was 0).
+inline constexpr double MAX_TASK_WEIGHT = 1e12;
+
 struct FloorTask {
     int from = 0; // vertex numbers
     int to = 0;
@@ -28,7 +33,8 @@ std::optional<int> find_place(const Floor &floor, const std::string &text, std::
 
 // Reads the CSV at `path` (header `from,to,weight`, then one task a row; blank lines
 // skipped; no quoting). Throws pddl::ParseError at FILE:LINE:COL for a bad row, an unknown
-// place, from = to, a pair given twice, a weight that is not a finite number > 0.
+// place, from = to, a pair given twice, a weight that is not a finite number > 0 and at most
+// MAX_TASK_WEIGHT.
 std::vector<FloorTask> read_tasks_csv(const std::string &path, const Floor &floor);
 std::vector<FloorTask> parse_tasks_csv(const std::string &text, const std::string &path,
                                        const Floor &floor);

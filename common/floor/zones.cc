@@ -44,6 +44,8 @@ Zone read_zone(const JsonFile &file, std::size_t i, const json &zone, std::strin
         file.fail({"zones", i}, "zone " + std::to_string(i) + ": a zone is not an object");
     Zone z;
     z.id = text_field(file, i, zone, "zoneId");
+    if (std::string why = name_problem(z.id); !why.empty())
+        file.fail({"zones", i, "zoneId"}, "zone " + std::to_string(i) + ": its zoneId " + why);
     type = text_field(file, i, zone, "zoneType");
     z.type = type == "LINE_GUIDED" ? ZoneType::LINE_GUIDED : ZoneType::BLOCKED;
     if (!known_type(type))

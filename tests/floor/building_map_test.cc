@@ -186,6 +186,36 @@ TEST(BuildingMap, ALevelGivenTwiceAndAGraphNumberOutOfRangeAreRefused) {
               std::string::npos);
 }
 
+// Issue 21, found writing fuzz_floor_inputs: a place's label and the level's name went as
+// they were into the comments of the spec and the problems (a newline ended the comment, and
+// the rest was read as spec fields or PDDL) and into floor.json (bytes that are not UTF-8 made
+// the import throw a JSON library error, no FILE:LINE:COL).
+TEST(BuildingMap, NamesThatCannotBeWrittenAreRefusedAtTheirLine) {
+    MapText m = pixel_map();
+    m.vertices[2].name = "b\\n(:goal"; // YAML's escape: a newline
+    std::string e = error_of(m.yaml());
+    EXPECT_NE(e.find("site.building.yaml:7:"), std::string::npos) << e;
+    EXPECT_NE(e.find("error: the name of vertex 2 holds a control character (byte 1)"),
+              std::string::npos)
+        << e;
+    m.vertices[2].name = "b\xff";
+    EXPECT_NE(error_of(m.yaml()).find("the name of vertex 2 is not UTF-8 text (byte 1)"),
+              std::string::npos)
+        << error_of(m.yaml());
+    m.vertices[2].name = std::string(257, 'b');
+    EXPECT_NE(error_of(m.yaml()).find("the name of vertex 2 is longer than 256 bytes"),
+              std::string::npos);
+    // Only places are written: vertex 3 is on no lane.
+    m.vertices[2].name = "caf\xc3\xa9 \xe2\x98\x95";
+    m.vertices[3].name = "far\\x01"; // YAML's escape
+    EXPECT_EQ(read(m).places[2].name, "caf\xc3\xa9 \xe2\x98\x95");
+    m.vertices[3].name = "far";
+    m.level = "\"L1\\nalpha: 7\"";
+    EXPECT_NE(error_of(m.yaml()).find("error: the level's name holds a control character"),
+              std::string::npos)
+        << error_of(m.yaml());
+}
+
 TEST(BuildingMap, AnEmptyFileIsNoMap) {
     EXPECT_NE(error_of("").find("site.building.yaml:1:1: error: a building map is a YAML map"),
               std::string::npos);

@@ -149,5 +149,17 @@ TEST(Zones, FaultsAreAtTheirLine) {
     EXPECT_NE(zone_error("[]").find("zones.json:1:1: error: a zone file is"), std::string::npos);
 }
 
+// Issue 21 (fuzz_floor_inputs): a zone's id is a modification's name in the spec and a name
+// in floor.json; a control character in it is refused where it is written.
+TEST(Zones, AnIdThatCannotBeWrittenIsRefused) {
+    std::string e = zone_error(
+        "{\"zones\": [\n {\"zoneId\": \"gap\\r\", \"zoneType\": \"BLOCKED\", \"cost\": 1,"
+        " \"vertices\": [{\"x\": 0, \"y\": 0}, {\"x\": 1, \"y\": 0}, {\"x\": 1, \"y\": 1}]}]}");
+    EXPECT_NE(
+        e.find("zones.json:2:13: error: zone 0: its zoneId holds a control character (byte 3)"),
+        std::string::npos)
+        << e;
+}
+
 } // namespace
 } // namespace envdesign::floor

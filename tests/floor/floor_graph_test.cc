@@ -158,3 +158,59 @@ TEST(FloorGraph, ADenseFloorAtThePlaceLimitIsRefusedOrFastNeverUnbounded) {
 
 } // namespace
 } // namespace envdesign::floor
+
+namespace envdesign::floor {
+namespace {
+
+// Issue 21 (found writing fuzz_floor_inputs): ten thousand walls across the whole floor, a
+// 64 KB map, were each entered in about three thousand cells of the wall grid: minutes and
+// gigabytes before the first sight line. Cells now grow with the walls' total length.
+TEST(FloorGraph, ManyLongWallsAreEnteredInFewCells) {
+    Floor f;
+    f.places = {{0, "", {0, 1}, {0, 1}}, {1, "", {5, 1}, {5, 1}}};
+    for (int i = 0; i < 40000; ++i) {
+        double y = i % 2 ? -1 : 3; // below and above the sight line, the floor's whole width
+        Segment w{{-MAX_COORDINATE_M, y}, {MAX_COORDINATE_M, y}};
+        f.walls.push_back(w);
+        f.walls_raw.push_back(w);
+    }
+    auto start = std::chrono::steady_clock::now();
+    std::vector<Edge> lines = sight_lines(f.places, f.walls, f.walls_raw, 10);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(lines, (std::vector<Edge>{{0, 1}}));
+    EXPECT_LT(seconds, 5.0);
+}
+
+// Issue 21: every pair within sight is tested against the walls near it; places and walls
+// dense enough to make that more than MAX_WALL_TESTS tests (here a budget of 100,000) are
+// refused, not run for minutes.
+TEST(FloorGraph, TooManyWallTestsAreRefused) {
+    Floor f;
+    for (int i = 0; i < 100; ++i) { // 4950 pairs within sight
+        Point p{0.5 * (i % 10), 0.5 * (i / 10)};
+        f.places.push_back({i, "", p, p});
+    }
+    for (int i = 0; i < 30; ++i) { // beside the places, blocking nothing
+        Segment w{{12 + 0.01 * i, 0}, {12 + 0.01 * i, 1}};
+        f.walls.push_back(w);
+        f.walls_raw.push_back(w);
+    }
+    try {
+        sight_lines(f.places, f.walls, f.walls_raw, 15, nullptr, 100000);
+        ADD_FAILURE() << "4950 pairs x 31 tests were made";
+    } catch (const FloorError &e) {
+        EXPECT_NE(
+            std::string(e.what()).find("more than 100000 tests of a sight line against a wall"),
+            std::string::npos)
+            << e.what();
+    }
+    // A third of the walls: 4950 x 11 tests, within the budget.
+    f.walls.resize(10);
+    f.walls_raw.resize(10);
+    EXPECT_EQ(sight_lines(f.places, f.walls, f.walls_raw, 15, nullptr, 100000).size(), 4950u);
+    EXPECT_EQ(sight_lines(f.places, f.walls, f.walls_raw, 15).size(), 4950u);
+}
+
+} // namespace
+} // namespace envdesign::floor

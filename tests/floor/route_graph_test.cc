@@ -110,6 +110,31 @@ TEST(RouteGraph, FaultsAreAtTheirLine) {
         << graph_error_of(flat);
 }
 
+// Issue 21 (fuzz_floor_inputs): a label is written into comments and floor.json.
+TEST(RouteGraph, ALabelThatCannotBeWrittenIsRefused) {
+    std::string text =
+        graph({node(0, 0, 0, ", \"name\": \"dock\\n(:goal\""), node(1, 5, 0), edge(10, 0, 1)});
+    EXPECT_NE(graph_error_of(text).find("route.geojson:2:"), std::string::npos)
+        << graph_error_of(text);
+    EXPECT_NE(graph_error_of(text).find("error: the name of node 0 holds a control character"),
+              std::string::npos)
+        << graph_error_of(text);
+}
+
+// Issue 21, found by fuzz_floor_inputs: a Point whose geometry has no `coordinates` key was
+// looked up with a const json's operator[], which asserts (undefined without asserts).
+TEST(RouteGraph, APointWithoutCoordinatesIsAnErrorNotACrash) {
+    std::string text = graph(
+        {node(0, 0, 0),
+         R"({"type": "Feature", "geometry": {"type": "Point", "coordi&nates": [2, 8]}, "properties": {"id": 21}})",
+         edge(10, 0, 21)});
+    EXPECT_NE(graph_error_of(text).find("route.geojson:3:"), std::string::npos)
+        << graph_error_of(text);
+    EXPECT_NE(graph_error_of(text).find("error: node 21 has no coordinates [x, y]"),
+              std::string::npos)
+        << graph_error_of(text);
+}
+
 TEST(Pgm, BinaryAndPlainAreReadAndScaledTo255) {
     GreyImage plain = parse_pgm("P2\n# a comment\n3 1\n15\n0 15 8\n", "m.pgm");
     ASSERT_EQ(plain.width, 3);

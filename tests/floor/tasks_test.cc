@@ -73,6 +73,13 @@ TEST(Tasks, CsvFaultsAreAtTheirLineAndColumn) {
               std::string::npos);
     EXPECT_NE(csv_error("from,to,weight\ndock,pack,-2\n").find("tasks.csv:2:11:"),
               std::string::npos);
+    // Issue 21 (fuzz_floor_inputs): two weights of 1.7e308 summed to inf, and every
+    // probability the spec got was 0 (a spec the design command refuses).
+    EXPECT_NE(csv_error("from,to,weight\ndock,pack,1e12\npack,dock,1.7e308\n")
+                  .find("tasks.csv:3:11: error: weight 1.7e308 is not a finite number > 0 and "
+                        "at most 1e12"),
+              std::string::npos)
+        << csv_error("from,to,weight\ndock,pack,1e12\npack,dock,1.7e308\n");
     EXPECT_NE(csv_error("from,to,weight\ndock,pack,lots\n")
                   .find("tasks.csv:2:11: error: weight "
                         "'lots' is not a number"),
