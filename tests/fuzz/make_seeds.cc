@@ -215,6 +215,43 @@ void service_config_seeds(const fs::path &out) {
                               "max-spec-bytes = -1\nversion = true\n");
 }
 
+// floor_inputs: a reader byte (0 building map, 1 route graph, 2 occupancy map and PGM after
+// a NUL, 3 tasks CSV, 4 zone file; the last three over the target's fixed graph), then the
+// file: the floor examples, and small files written here.
+void floor_seeds(const fs::path &source, const fs::path &out) {
+    fs::path floor = source / "examples/floor";
+    write(out, "warehouse.building.yaml",
+          std::string(1, '\0') + read(floor / "warehouse.building.yaml"));
+    write(out, "cartesian.building.yaml",
+          std::string(1, '\0') +
+              "coordinate_system: cartesian_meters\nlevels:\n  L1:\n"
+              "    vertices:\n      - [0, 0, 0, dock]\n      - [8, 0, 0, shelf]\n"
+              "      - [8, 6, 0, \"\"]\n      - [4, -1, 0]\n      - [4, 1, 0]\n"
+              "    lanes:\n      - [0, 2, {bidirectional: [4, true]}]\n"
+              "      - [2, 1, {graph_idx: [2, 0]}]\n"
+              "    walls:\n      - [3, 4, {texture_name: [1, default]}]\n");
+    write(out, "route.geojson", "\1" + read(floor / "nav2/route.geojson"));
+    write(out, "nav2-map",
+          "\2" + read(floor / "nav2/map.yaml") + '\0' + read(floor / "nav2/map.pgm"));
+    std::string pgm = "P2\n# a wall at x = 3 m\n7 7\n255\n";
+    for (int row = 0; row < 7; ++row)
+        for (int col = 0; col < 7; ++col)
+            pgm += col == 3 && row > 0 && row < 6 ? "0 " : "255 ";
+    write(out, "tiny-map",
+          "\2image: map.pgm\nresolution: 1\norigin: [-0.5, -0.5, 0]\n"
+          "negate: 0\noccupied_thresh: 0.65\n" +
+              std::string(1, '\0') + pgm);
+    write(out, "tasks.csv", "\3from,to,weight\ndock,b,2\nv1,c,1\r\nc , a, 0.5\n");
+    write(out, "zones.json",
+          "\4{\"zones\": [{\"zoneId\": \"middle\", \"zoneType\": \"BLOCKED\", \"cost\": 2.5,"
+          " \"vertices\": [{\"x\": 2.5, \"y\": 2.5}, {\"x\": 3.5, \"y\": 2.5}, {\"x\": 3.5, \"y\": "
+          "3.5}]},"
+          " {\"zoneId\": \"mark\", \"zoneType\": \"LINE_GUIDED\", \"cost\": 0,"
+          " \"vertices\": [{\"x\": 1, \"y\": 5}, {\"x\": 5, \"y\": 1}, {\"x\": 5, \"y\": 5}]},"
+          " {\"zoneId\": \"lift\", \"zoneType\": \"SPEED_LIMITED\"}]}");
+    write(out, "warehouse-zones.json", "\4" + read(floor / "zones.json"));
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -229,6 +266,7 @@ int main(int argc, char **argv) {
     file_seeds(source, corpus);
     wire_number_seeds(source, corpus / "wire_numbers");
     service_config_seeds(corpus / "service_config");
+    floor_seeds(source, corpus / "floor_inputs");
     std::cout << "seeds written under " << corpus << "\n";
     return 0;
 }

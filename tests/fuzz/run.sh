@@ -11,7 +11,7 @@ shift
 dir=${ENVDESIGN_FUZZ_BUILD:-build-fuzz}
 names=("$@")
 [ ${#names[@]} -gt 0 ] || names=(pddl spec_text spec_json coordinator planner intake store_records numbers
-    service_config wire_numbers)
+    service_config wire_numbers floor_inputs)
 mkdir -p "$dir/fuzz-artifacts" "$dir/fuzz-logs"
 failed=0
 printf '%-12s %8s %12s %8s %8s %8s  %s\n' target seconds executions exec/s cov ft result
