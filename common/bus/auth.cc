@@ -30,6 +30,8 @@ std::uint64_t get_u64(const unsigned char *in) {
     return value;
 }
 
+} // namespace
+
 std::uint64_t random_sender() {
     std::random_device random;
     std::uint64_t id = 0;
@@ -37,6 +39,27 @@ std::uint64_t random_sender() {
         id = (id << 16) ^ (random() & 0xffff);
     return id == 0 ? 1 : id;
 }
+
+std::string with_origin(std::uint64_t origin, const void *data, std::size_t size) {
+    std::string out(size + ORIGIN_SIZE, '\0');
+    if (size > 0)
+        std::memcpy(out.data(), data, size);
+    auto *trailer = reinterpret_cast<unsigned char *>(out.data() + size);
+    put_u64(trailer, origin);
+    std::memcpy(trailer + 8, ORIGIN_MAGIC, 4);
+    return out;
+}
+
+std::uint64_t declared_origin(const void *data, std::size_t size) {
+    if (size < static_cast<std::size_t>(ORIGIN_SIZE))
+        return 0;
+    const auto *trailer = static_cast<const unsigned char *>(data) + size - ORIGIN_SIZE;
+    if (std::memcmp(trailer + 8, ORIGIN_MAGIC, 4) != 0)
+        return 0;
+    return get_u64(trailer);
+}
+
+namespace {
 
 std::string padded_id(const std::string &id) {
     std::string out(8, '\0');

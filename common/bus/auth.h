@@ -39,6 +39,18 @@ namespace envdesign::bus {
 inline constexpr int TRAILER_SIZE = 68;
 inline constexpr char TRAILER_MAGIC[4] = {'E', 'D', 'A', '1'};
 
+// Without keys a message carries a 12-byte origin trailer instead: the sending process's
+// random id (8 bytes, big-endian, as the signed sender) and "EDO1". Nothing proves it: it
+// lets a coordinator count one process's many client names as one client (admission and
+// fair shares, cluster/coordinator.h); anyone on an unkeyed bus can forge it.
+inline constexpr int ORIGIN_SIZE = 12;
+inline constexpr char ORIGIN_MAGIC[4] = {'E', 'D', 'O', '1'};
+std::string with_origin(std::uint64_t origin, const void *data, std::size_t size);
+// The origin `data` declares, or 0 when it ends in no origin trailer.
+std::uint64_t declared_origin(const void *data, std::size_t size);
+// A random non-zero id for a process's bus (the signed sender, or the declared origin).
+std::uint64_t random_sender();
+
 // Why a message was dropped; the order is that of the checks.
 enum class Drop : int { UNAUTHENTICATED, UNKNOWN_KEY, BAD_MAC, STALE, REPLAYED };
 inline constexpr int DROP_REASONS = 5;

@@ -52,17 +52,22 @@ Bus::Bus(const std::string &url, std::shared_ptr<spdlog::logger> logger,
         signer_ = std::make_unique<Signer>(*keys);
         verifier_ = std::make_unique<Verifier>(*keys);
     }
+    origin_ = signer_ ? signer_->sender() : random_sender();
 }
 
 Bus::~Bus() = default;
 
-void Bus::publish_raw(const std::string &channel, const void *data, int size) {
+void Bus::send(const std::string &channel, const void *data, int size, bool declare_origin) {
     std::lock_guard lock(publish_mutex_);
-    std::string signed_bytes; // signed under the lock: counters go out in order
-    if (signer_) {
-        signed_bytes = signer_->sign(channel, data, static_cast<std::size_t>(size));
-        data = signed_bytes.data();
-        size = static_cast<int>(signed_bytes.size());
+    // Signed under the lock (counters go out in order); without keys, the origin trailer.
+    std::string wire;
+    if (signer_)
+        wire = signer_->sign(channel, data, static_cast<std::size_t>(size));
+    else if (declare_origin)
+        wire = with_origin(origin_, data, static_cast<std::size_t>(size));
+    if (!wire.empty()) {
+        data = wire.data();
+        size = static_cast<int>(wire.size());
     }
     if (lcm_.publish(channel, data, static_cast<unsigned int>(size)) != 0)
         logger_->warn("request - | could not publish {} bytes on {}", size, channel);
@@ -97,7 +102,13 @@ void Bus::trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channe
     auto *slot = static_cast<Subscription::Slot *>(context);
     Bus &bus = *slot->bus;
     if (!bus.verifier_) {
-        bus.run_handler(slot->handler, buffer->data, static_cast<int>(buffer->data_size), channel);
+        std::size_t size = buffer->data_size;
+        std::uint64_t origin = declared_origin(buffer->data, size);
+        if (origin != 0)
+            size -= ORIGIN_SIZE;
+        bus.message_origin_ = origin == bus.origin_ ? 0 : origin;
+        bus.run_handler(slot->handler, buffer->data, static_cast<int>(size), channel);
+        bus.message_origin_ = 0;
         return;
     }
     Verdict verdict;
@@ -112,9 +123,9 @@ void Bus::trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channe
         bus.count_drop(channel, *verdict.drop);
         return;
     }
-    bus.message_sender_ = verdict.sender;
+    bus.message_sender_ = bus.message_origin_ = verdict.sender;
     bus.run_handler(slot->handler, buffer->data, static_cast<int>(verdict.payload_size), channel);
-    bus.message_sender_ = 0;
+    bus.message_sender_ = bus.message_origin_ = 0;
 }
 
 void Bus::run_handler(const RawHandler &handler, const void *data, int size,

@@ -98,11 +98,17 @@ public:
     const std::string &url() const { return url_; }
     spdlog::logger &log() const { return *logger_; }
 
+    // Signed with keys; without, followed by this process's origin trailer (auth.h).
     template <typename Message> void publish(const std::string &channel, const Message &message) {
         std::string bytes = encode_message(message);
-        publish_raw(channel, bytes.data(), static_cast<int>(bytes.size()));
+        send(channel, bytes.data(), static_cast<int>(bytes.size()), true);
     }
-    void publish_raw(const std::string &channel, const void *data, int size);
+    // The bytes as given (signed with keys, but no origin without): a relay's or a test's.
+    void publish_raw(const std::string &channel, const void *data, int size) {
+        send(channel, data, size, false);
+    }
+    // This bus's process id: the signed sender with keys, the declared origin without.
+    std::uint64_t origin() const { return origin_; }
 
     template <typename Message>
     Subscription subscribe(const std::string &channel, std::function<void(const Message &)> handler,
@@ -137,6 +143,10 @@ public:
     // In a handler (bus thread): the verified sender id of the message being handled, 0 on
     // an unauthenticated bus. Binds a later message to the process that sent an earlier one.
     std::uint64_t message_sender() const { return message_sender_; }
+    // In a handler: the process the message says it comes from: the verified sender with
+    // keys; without, the origin it declares (auth.h: unproven), 0 when it declares none or
+    // is this bus's own (in-process traffic, memq://). The unit of admission and fair shares.
+    std::uint64_t message_origin() const { return message_origin_; }
 
 private:
     friend class Subscription;
@@ -144,6 +154,7 @@ private:
                            void *context);
     void run_handler(const RawHandler &handler, const void *data, int size,
                      const std::string &channel);
+    void send(const std::string &channel, const void *data, int size, bool declare_origin);
     void unsubscribe(lcm::Subscription *raw);
     void count_drop(const std::string &channel, Drop reason);
     void guard_receive_socket();
@@ -157,6 +168,8 @@ private:
     std::unique_ptr<Signer> signer_;     // under publish_mutex_
     std::unique_ptr<Verifier> verifier_; // bus thread
     std::uint64_t message_sender_ = 0;   // bus thread
+    std::uint64_t message_origin_ = 0;   // bus thread
+    std::uint64_t origin_ = 0;           // declared without keys (the signer's id with)
     bool guarded_ = false;               // udpm_guard.h, once LCM has its receive socket
     mutable std::mutex drops_mutex_;
     AuthDrops drops_;

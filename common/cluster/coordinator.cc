@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace envdesign::cluster {
@@ -161,7 +162,8 @@ void Coordinator::on_request(const design_request_t &request) {
         answer(std::move(result)); // not kept: a repeat is checked again, as cheaply
         return;
     }
-    if (auto why = busy(request.sender)) {
+    const std::string client = client_unit(bus_.message_origin(), request.sender);
+    if (auto why = busy(client)) {
         bus_.log().warn("request {} | refused, busy: {}", name, *why);
         auto result = error_result(1, "the coordinator is busy (" + *why + "); try again later");
         result.request_id = request.request_id;
@@ -179,8 +181,9 @@ void Coordinator::on_request(const design_request_t &request) {
                        config_.grace_s,
                        config_.stored_evaluations > 0 ? &stores_ : nullptr,
                        config_.max_time_limit_s,
-                       bus_.message_sender()};
+                       client};
     open_[name].run = std::make_unique<RequestRun>(context, request);
+    open_[name].client = client;
     open_[name].client_origin = bus_.message_sender();
     open_[name].heard = Clock::now();
     waiting_.push_back(name);
@@ -191,11 +194,19 @@ void Coordinator::on_request(const design_request_t &request) {
     start_waiting();
 }
 
-// Why a new request of `client` cannot be taken now (nullopt: it can).
+std::string client_unit(std::uint64_t origin, const std::string &name) {
+    if (origin == 0)
+        return "client " + name;
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(origin));
+    return std::string("process ") + hex;
+}
+
+// Why a new request of `client` (a unit) cannot be taken now (nullopt: it can).
 std::optional<std::string> Coordinator::busy(const std::string &client) const {
     int mine = 0, active = 0;
     for (const auto &[name, open] : open_) {
-        mine += open.run->request().sender == client ? 1 : 0;
+        mine += open.client == client ? 1 : 0;
         active += open.started ? 1 : 0;
     }
     if (mine >= config_.max_per_client)
@@ -335,17 +346,16 @@ void Coordinator::start_waiting() {
     for (const auto &[name, open] : open_)
         if (open.started) {
             ++active;
-            ++searching[open.run->request().sender];
+            ++searching[open.client];
         }
     while (election_.role() == Role::ACTIVE && active < config_.max_active && !waiting_.empty()) {
         auto next = waiting_.begin();
         for (auto it = waiting_.begin(); it != waiting_.end(); ++it)
-            if (searching[open_.at(*it).run->request().sender] <
-                searching[open_.at(*next).run->request().sender])
+            if (searching[open_.at(*it).client] < searching[open_.at(*next).client])
                 next = it;
         Open &open = open_.at(*next);
         waiting_.erase(next);
-        ++searching[open.run->request().sender];
+        ++searching[open.client];
         open.run->start();
         open.started = true;
         ++active;

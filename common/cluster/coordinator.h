@@ -50,6 +50,12 @@ namespace envdesign::cluster {
 std::optional<std::string> request_problem(const envdesign::design_request_t &request,
                                            std::size_t max_spec_bytes);
 
+// The unit a request counts for in admission (max_per_client) and the planners' fair shares:
+// the process that sent it when the bus names one (bus::Bus::message_origin: signed with
+// keys, declared without), so that forty client names from one process are one client;
+// else the client's name.
+std::string client_unit(std::uint64_t origin, const std::string &name);
+
 struct CoordinatorConfig {
     std::string instance; // this coordinator's name on the bus
     // Requests searched at once. A search mostly waits for its planners' answers, and the
@@ -57,7 +63,7 @@ struct CoordinatorConfig {
     // of requests that never end must not keep another client's request from starting.
     int max_active = 64;
     int max_waiting = 64;   // requests waiting for a search slot, from all clients
-    int max_per_client = 8; // requests searching or waiting per client (sender)
+    int max_per_client = 8; // requests searching or waiting per client (client_unit)
     // The largest spec a request may carry (its text and files); larger is bad input.
     std::size_t max_spec_bytes = DEFAULT_MAX_SPEC_BYTES;
     PoolConfig pool;
@@ -116,6 +122,7 @@ private:
         Clock::time_point last_progress{};
         envdesign::design_progress_t last_sent{};
         std::uint64_t client_origin = 0; // the bus sender of the request (0: no keys)
+        std::string client;              // its unit of admission and fair shares
         Clock::time_point heard;         // the client's last keepalive or repeat
         bool dropped = false;            // cancelled for its client's silence
     };

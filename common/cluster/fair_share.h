@@ -2,9 +2,9 @@
 // Fair shares of the planners between clients (planner_pool.h's queue): a client of many
 // long jobs must not hold every planner slot while another waits (issue 21: forty requests
 // that never end starved every other client), and a client that used the planners little
-// lately gets them first. The unit is the client: with bus keys the process that sent the
-// requests (forty names from one process are one client), else the client's name; its
-// requests share its part.
+// lately gets them first. The unit is the client (client_unit, coordinator.h): the process
+// that sent the requests (signed with bus keys, declared without: forty names from one
+// process are one client), else the client's name; its requests share its part.
 //
 // A client's usage is the planner-seconds its jobs took, halved every half_life_s (as a Unix
 // or fair-share scheduler decays CPU usage), plus the seconds its running jobs have run so

@@ -96,13 +96,9 @@ void RequestRun::run() {
 }
 
 void RequestRun::search(const design::DesignProblem &problem, const std::string &hash) {
-    // The fair-share unit: the sending process where bus keys name it, else the client name.
-    std::string client = context_.client_origin != 0
-                             ? "process " + std::to_string(context_.client_origin)
-                             : "client " + request_.sender;
     LcmEvaluator evaluator(problem, context_.router,
-                           {request_.request_id, hash, request_.heuristic, client}, cancelled_,
-                           context_.grace_s);
+                           {request_.request_id, hash, request_.heuristic, context_.client},
+                           cancelled_, context_.grace_s);
     {
         std::lock_guard lock(mutex_);
         evaluator_ = &evaluator;

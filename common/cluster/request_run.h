@@ -31,7 +31,7 @@ struct RunContext {
     double grace_s = 1.0; // after the deadline, planners' LIMIT answers are awaited this long
     EvaluationStores *stores = nullptr; // evaluations kept across requests; null: none
     double max_time_limit_s = 0;        // the coordinator's cap on a request's time; 0: none
-    std::uint64_t client_origin = 0;    // the request's signed bus sender (0: no keys)
+    std::string client; // the request's unit of fair shares (Coordinator::client_unit)
 };
 
 class RequestRun {

@@ -185,5 +185,42 @@ TEST(AuthBus, OnlyMessagesSignedWithTheKeyReachHandlersTheRestAreCounted) {
     EXPECT_EQ(receiver.malformed(), 0);
 }
 
+// Without keys a typed message declares its process (auth.h's origin trailer): another bus
+// reads it as message_origin() and its handlers get the message alone; its own bus reads 0
+// (in-process traffic); raw bytes declare nothing; a forged trailer is believed (unproven:
+// only keys make a process's id hard to forge).
+TEST(AuthBus, WithoutKeysATypedMessageDeclaresItsProcess) {
+    Bus receiver(udp_url(), quiet());
+    Bus sender(udp_url(), quiet());
+    ASSERT_NE(sender.origin(), 0u);
+    ASSERT_NE(sender.origin(), receiver.origin());
+    std::vector<std::pair<std::string, std::uint64_t>> heard;
+    auto sub = receiver.subscribe<envdesign::cancel_t>(CANCEL, [&](const envdesign::cancel_t &c) {
+        heard.emplace_back(c.reason, receiver.message_origin());
+    });
+    envdesign::cancel_t cancel{};
+    cancel.sender = "client/a";
+    cancel.reason = "typed";
+    sender.publish(CANCEL, cancel);
+    pump(receiver, sender);
+    cancel.reason = "own";
+    receiver.publish(CANCEL, cancel);
+    pump(receiver, sender);
+    cancel.reason = "raw";
+    std::string bytes = encode_message(cancel);
+    sender.publish_raw(CANCEL, bytes.data(), static_cast<int>(bytes.size()));
+    pump(receiver, sender);
+    cancel.reason = "forged";
+    std::string forged = with_origin(12345, encode_message(cancel).data(),
+                                     static_cast<std::size_t>(encode_message(cancel).size()));
+    sender.publish_raw(CANCEL, forged.data(), static_cast<int>(forged.size()));
+    pump(receiver, sender);
+    using Heard = std::vector<std::pair<std::string, std::uint64_t>>;
+    EXPECT_EQ(heard,
+              (Heard{{"typed", sender.origin()}, {"own", 0}, {"raw", 0}, {"forged", 12345}}));
+    EXPECT_EQ(receiver.malformed(), 0);
+    EXPECT_EQ(declared_origin(bytes.data(), bytes.size()), 0u);
+}
+
 } // namespace
 } // namespace envdesign::bus
