@@ -111,6 +111,9 @@ class UdpmBus:
         self.auth = auth  # envdesign_auth.Auth, or None: unauthenticated
         self.group, self.port, options = parse_url(url)
         self.sequence = random.getrandbits(31)
+        # Without keys, each message declares this process (the C++ bus's origin trailer,
+        # common/bus/auth.h): the coordinator counts its requests as one client's.
+        self.origin = random.getrandbits(64) or 1
         self.tx = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
         self.tx.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_TTL, int(options.get("ttl", 0)))
         self.tx.setsockopt(socket.IPPROTO_IP, socket.IP_MULTICAST_LOOP, 1)
@@ -128,7 +131,15 @@ class UdpmBus:
         self.tx.close()
         self.rx.close()
 
+    def publish_message(self, channel, message):
+        """An LCM message: signed with keys, else followed by this process's origin."""
+        payload = message.encode()
+        if not self.auth:
+            payload += struct.pack(">Q", self.origin) + b"EDO1"
+        self.publish(channel, payload)
+
     def publish(self, channel, payload):
+        """The bytes as given (signed with keys)."""
         if self.auth:
             payload = self.auth.sign(channel, payload)
         self.sequence = (self.sequence + 1) & 0xFFFFFFFF
@@ -417,12 +428,12 @@ def _keep_alive(bus, request):
     keepalive = keepalive_t()
     keepalive.utime, keepalive.request_id = int(time.time() * 1e6), request.request_id
     keepalive.sender = request.sender
-    bus.publish("ENVDESIGN_KEEPALIVE", keepalive.encode())
+    bus.publish_message("ENVDESIGN_KEEPALIVE", keepalive)
 
 
 def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_up_after_s):
     start = sent = heard = kept_alive = time.monotonic()
-    bus.publish("ENVDESIGN_REQUEST", request.encode())
+    bus.publish_message("ENVDESIGN_REQUEST", request)
     cancelled = False
     taken_by = [None]  # the coordinator that took the request
     while True:
@@ -442,7 +453,7 @@ def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_
             cancel = cancel_t()
             cancel.utime, cancel.request_id, cancel.sender = int(time.time() * 1e6), request.request_id, request.sender
             cancel.reason = "the client's timeout passed"
-            bus.publish("ENVDESIGN_CANCEL", cancel.encode())
+            bus.publish_message("ENVDESIGN_CANCEL", cancel)
             cancelled, start = True, now
         elif cancelled and now - start > 5:
             raise RemoteError(4, f"timeout: no result within {timeout_s} s")
@@ -450,7 +461,7 @@ def _wait_for_result(bus, request, timeout_s, on_progress, resend_after_s, give_
             raise RemoteError(1, f"no coordinator answered on udpm://{bus.group}:{bus.port}")
         if now - sent > resend_after_s and now - heard > resend_after_s:
             taken_by[0] = None  # it went silent: whoever takes the request now
-            bus.publish("ENVDESIGN_REQUEST", request.encode())
+            bus.publish_message("ENVDESIGN_REQUEST", request)
             sent = kept_alive = now
         if not cancelled and now - kept_alive >= KEEPALIVE_S:
             _keep_alive(bus, request)
