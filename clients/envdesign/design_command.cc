@@ -7,6 +7,8 @@
 #include "result_format.h"
 
 #include "cluster/result_message.h"
+#include "design/numbers.h"
+#include "service/number_flag.h"
 #include "spec/design_spec.h"
 
 #include <envdesign/client/client.h>
@@ -80,7 +82,7 @@ void add_design_flags(CLI::App &command, DesignFlags &flags) {
     command
         .add_option("--max-design-size", flags.max_design_size,
                     "most modifications in a design (0: no limit; default: the spec's)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(service::number_in(design::DESIGN_SIZE));
     command
         .add_option("--search", flags.search,
                     "witness (exact, grows designs where they matter) | exhaustive (every subset)")
