@@ -6,10 +6,10 @@
 #include "progress.h"
 #include "result_format.h"
 
-#include "cluster/result_message.h"
 #include "design/numbers.h"
 #include "service/number_flag.h"
 #include "spec/design_spec.h"
+#include "wire/result_message.h"
 
 #include <envdesign/client/client.h>
 #include <spdlog/spdlog.h>
@@ -123,7 +123,7 @@ int run_design(const DesignFlags &flags) {
     }
     printer.finish(run.result);
     print_warnings({run.warnings.begin() + problem.warnings.size(), run.warnings.end()});
-    envdesign::design_result_t message = cluster::result_message(problem, run);
+    envdesign::design_result_t message = wire::result_message(problem, run);
     std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
               << std::flush;
     const design::DesignResult &result = run.result;

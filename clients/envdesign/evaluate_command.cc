@@ -4,9 +4,9 @@
 #include "local_run.h"
 #include "result_format.h"
 
-#include "cluster/result_message.h"
 #include "design/evaluate_design.h"
 #include "spec/design_spec.h"
+#include "wire/result_message.h"
 
 #include <spdlog/spdlog.h>
 
@@ -60,7 +60,7 @@ int run_evaluate(const EvaluateFlags &flags) {
     design::DesignResult result =
         design::evaluate_design(*problem, run.evaluator(), configuration, deadline);
     envdesign::design_result_t message =
-        cluster::result_message(*problem, run.explained(std::move(result), deadline));
+        wire::result_message(*problem, run.explained(std::move(result), deadline));
     message.status = "evaluated";
     std::cout << (flags.json ? client::result_json(message) + "\n" : client::result_text(message))
               << std::flush;

@@ -2,7 +2,7 @@
 // The in-process engine the local commands (design, evaluate, report) share: N planner
 // threads (LocalEvaluator) behind an EvaluationLog, so that every design evaluated in full
 // can be re-weighed by the explanation. The commands turn its runs into the message the
-// coordinator sends (cluster/result_message.h), so that one formatter prints both paths.
+// coordinator sends (wire/result_message.h), so that one formatter prints both paths.
 
 #include "design/design_run.h"
 #include "design/evaluation_log.h"

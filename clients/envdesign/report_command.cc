@@ -7,11 +7,11 @@
 #include "report_floor.h"
 #include "report_html.h"
 
-#include "cluster/result_message.h"
 #include "design/configuration.h"
 #include "design/explicability.h"
 #include "pddl/parse_error.h"
 #include "spec/design_spec.h"
+#include "wire/result_message.h"
 
 #include <spdlog/spdlog.h>
 
@@ -72,7 +72,7 @@ int run_report(const ReportFlags &flags) {
         design::DesignRun answer =
             run.run(settings, [&](const design::SearchProgress &p) { printer.update(p); });
         printer.finish(answer.result);
-        message = cluster::result_message(*problem, answer);
+        message = wire::result_message(*problem, answer);
     } catch (const pddl::ParseError &) { // a modified model that does not ground
         std::cerr << "\n";
         throw;

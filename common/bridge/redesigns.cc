@@ -5,10 +5,10 @@
 #include "bus/channels.h"
 #include "bus/log.h"
 #include "cluster/design_change.h"
-#include "cluster/wire.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/keepalive_t.hpp"
 #include "pddl/parse_error.h"
+#include "wire/job_messages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -96,7 +96,7 @@ void LocalRedesigns::reweigh(const Job &job) {
             answer.design = {out->change.after_names, out->change.objective_after,
                              "re-weighted: " + out->change.explanation, job.request_id};
             if (answer.changed) {
-                envdesign::design_result_t message = cluster::result_message(r.problem(), *out);
+                envdesign::design_result_t message = wire::result_message(r.problem(), *out);
                 message.change = answer.design.last_change;
                 message.utime = bus::now_utime();
                 message.request_id = job.request_id;
@@ -123,7 +123,7 @@ void LocalRedesigns::redesign(const Job &job) {
     Answer answer{id, job.request_id, std::nullopt, {}};
     try {
         arrivals::Redesign out = r.redesign(job.request.estimate, job.request.new_tasks);
-        message = cluster::result_message(r.problem(), out);
+        message = wire::result_message(r.problem(), out);
         message.change = out.change.explanation + "; " + arrivals::describe(job.request);
         answer.design = {out.change.after_names, out.change.objective_after, out.change.explanation,
                          job.request_id};
@@ -134,8 +134,7 @@ void LocalRedesigns::redesign(const Job &job) {
                         out.change.planner_runs, out.change.stored_answers,
                         out.change.seconds * 1e3);
     } catch (const std::exception &e) { // a spec model that does not ground: keep the design
-        message =
-            cluster::error_result(dynamic_cast<const pddl::ParseError *>(&e) ? 2 : 1, e.what());
+        message = wire::error_result(dynamic_cast<const pddl::ParseError *>(&e) ? 2 : 1, e.what());
         answer.design = {
             {}, NOT_KNOWN, std::string("re-evaluation failed: ") + e.what(), job.request_id};
         bus_.log().error("request {} | {}: {}", bus::request_name(instance_, job.request_id), id,

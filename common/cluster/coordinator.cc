@@ -4,9 +4,9 @@
 #include "bus/log.h"
 #include "cluster/design_change.h"
 #include "cluster/spec_chunks.h"
-#include "cluster/wire.h"
 #include "design/numbers.h"
 #include "store/state_dir.h"
+#include "wire/job_messages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -156,7 +156,7 @@ void Coordinator::on_request(const design_request_t &request) {
     }
     if (auto problem = request_problem(request, config_.max_spec_bytes)) {
         bus_.reject(bus::REQUEST, name + ": " + *problem);
-        auto result = error_result(2, "bad request: " + *problem);
+        auto result = wire::error_result(2, "bad request: " + *problem);
         result.request_id = request.request_id;
         result.client = request.sender;
         answer(std::move(result)); // not kept: a repeat is checked again, as cheaply
@@ -165,7 +165,8 @@ void Coordinator::on_request(const design_request_t &request) {
     const std::string client = client_unit(bus_.message_origin(), request.sender);
     if (auto why = busy(client)) {
         bus_.log().warn("request {} | refused, busy: {}", name, *why);
-        auto result = error_result(1, "the coordinator is busy (" + *why + "); try again later");
+        auto result =
+            wire::error_result(1, "the coordinator is busy (" + *why + "); try again later");
         result.request_id = request.request_id;
         result.client = request.sender;
         answer(std::move(result)); // not kept: a repeat later may find room

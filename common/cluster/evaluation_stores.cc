@@ -1,6 +1,6 @@
 #include "cluster/evaluation_stores.h"
 
-#include "cluster/wire.h"
+#include "wire/job_messages.h"
 
 #include <algorithm>
 
@@ -8,7 +8,7 @@ namespace envdesign::cluster {
 
 std::shared_ptr<design::EvaluationStore>
 EvaluationStores::store_for(const design::DesignProblem &problem, int heuristic) {
-    Key key = design::store_key(problem, heuristic_kind(static_cast<std::int8_t>(heuristic)));
+    Key key = design::store_key(problem, wire::heuristic_kind(static_cast<std::int8_t>(heuristic)));
     std::lock_guard lock(mutex_);
     auto it = stores_.find(key);
     if (it != stores_.end()) {

@@ -2,7 +2,7 @@
 
 #include "bus/channels.h"
 #include "bus/log.h"
-#include "cluster/wire.h"
+#include "wire/job_messages.h"
 
 #include <functional>
 #include <random>
@@ -92,7 +92,7 @@ void JobRouter::on_evaluation(const envdesign::evaluation_t &answer) {
     }
     auto kind = pool_.kind_of(answer.job_id);
     if (kind) {
-        if (auto problem = evaluation_problem(answer, *kind)) {
+        if (auto problem = wire::evaluation_problem(answer, *kind)) {
             bus_.reject(bus::EVALUATION, "job " + std::to_string(answer.job_id) + " from " +
                                              answer.sender + ": " + *problem);
             return; // the job stays out; a resend will ask again

@@ -1,7 +1,7 @@
 #include "cluster/lcm_evaluator.h"
 
-#include "cluster/wire.h"
 #include "envdesign/evaluation_t.hpp"
+#include "wire/job_messages.h"
 
 #include <algorithm>
 
@@ -63,9 +63,9 @@ void LcmEvaluator::send_jobs(Batch &batch, const design::Deadline &deadline) {
         auto job = batch.dispatcher.next_job();
         if (!job)
             return;
-        envdesign::job_t message =
-            job_message(*job, batch.configurations[job->configuration].configuration,
-                        request_.request_id, request_.spec_hash, request_.heuristic, deadline);
+        envdesign::job_t message = wire::job_message(
+            *job, batch.configurations[job->configuration].configuration, request_.request_id,
+            request_.spec_hash, request_.heuristic, deadline);
         batch.in_flight[router_.send(owner_, std::move(message))] = {*job, Clock::now()};
     }
 }
@@ -95,7 +95,7 @@ void LcmEvaluator::take(Batch &batch, const envdesign::evaluation_t &answer) {
                                      : "planner " + answer.sender + " failed: " + answer.error);
         return;
     }
-    design::JobAnswer taken = job_answer(job, answer);
+    design::JobAnswer taken = wire::job_answer(job, answer);
     if (sink_)
         sink_(batch.configurations[job.configuration].configuration, taken);
     batch.dispatcher.receive(std::move(taken));

@@ -2,11 +2,11 @@
 
 #include "bus/channels.h"
 #include "bus/log.h"
-#include "cluster/wire.h"
 #include "cluster/worker_caches.h"
 #include "envdesign/planner_heartbeat_t.hpp"
 #include "envdesign/spec_need_t.hpp"
 #include "pddl/parse_error.h"
+#include "wire/job_messages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -438,7 +438,7 @@ envdesign::evaluation_t Planner::evaluate(const Pending &pending, WorkerCaches &
             answer.error = spec ? spec->error : "the spec was dropped";
             return answer;
         }
-        if (auto problem = job_problem(job, *spec->problem)) {
+        if (auto problem = wire::job_problem(job, *spec->problem)) {
             bus_.reject(bus::JOB, "job " + std::to_string(job.job_id) + ": " + *problem);
             answer.status = envdesign::evaluation_t::STATUS_BAD_INPUT;
             answer.error = "bad job: " + *problem;
@@ -451,12 +451,14 @@ envdesign::evaluation_t Planner::evaluate(const Pending &pending, WorkerCaches &
             design::Deadline::in(job.time_limit_s > 0 ? std::max(job.time_limit_s - waited, 1e-3)
                                                       : 0)
                 .with_stop(stop);
-        design::Configuration configuration = configuration_of(job);
+        design::Configuration configuration = wire::configuration_of(job);
         design::EvaluatorCounters before = evaluator.counters();
         if (job.kind == envdesign::job_t::KIND_ROBOT_BOUND)
-            put_robot_bound(evaluator.robot_cost_bound(configuration, job.task, deadline), answer);
+            wire::put_robot_bound(evaluator.robot_cost_bound(configuration, job.task, deadline),
+                                  answer);
         else
-            put_explicability(evaluator.evaluate_task(configuration, job.task, deadline), answer);
+            wire::put_explicability(evaluator.evaluate_task(configuration, job.task, deadline),
+                                    answer);
         design::EvaluatorCounters after = evaluator.counters();
         answer.planner_runs = static_cast<std::int32_t>(after.planner_runs - before.planner_runs);
         answer.cache_hits = static_cast<std::int32_t>(after.cache_hits - before.cache_hits);

@@ -5,12 +5,12 @@
 #include "bus/log.h"
 #include "cluster/lcm_evaluator.h"
 #include "cluster/spec_chunks.h"
-#include "cluster/wire.h"
 #include "design/design_run.h"
 #include "design/evaluation_log.h"
 #include "design/stored_evaluator.h"
 #include "pddl/parse_error.h"
 #include "spec/spec_message.h"
+#include "wire/job_messages.h"
 
 #include <algorithm>
 #include <optional>
@@ -83,13 +83,13 @@ void RequestRun::run() {
         set_state(design_progress_t::STATE_SEARCHING);
         search(problem, hash);
     } catch (const pddl::ParseError &e) {
-        finish(error_result(2, e.what()));
+        finish(wire::error_result(2, e.what()));
     } catch (const RemoteError &e) {
-        finish(error_result(e.exit_code(), e.what()));
+        finish(wire::error_result(e.exit_code(), e.what()));
     } catch (const std::bad_alloc &) {
-        finish(error_result(4, "out of memory"));
+        finish(wire::error_result(4, "out of memory"));
     } catch (const std::exception &e) {
-        finish(error_result(1, e.what()));
+        finish(wire::error_result(1, e.what()));
     }
     if (!hash.empty())
         context_.specs.release(hash);
@@ -104,7 +104,7 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
         evaluator_ = &evaluator;
     }
     planning::PlannerOptions planner;
-    planner.heuristic = heuristic_kind(request_.heuristic);
+    planner.heuristic = wire::heuristic_kind(request_.heuristic);
     design::PlanCache local_planner(planner); // --prune relevant, the explanation's plans
     auto on_progress = [&](const design::SearchProgress &p) {
         std::lock_guard lock(mutex_);
@@ -138,7 +138,7 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
         evaluator_ = nullptr;
         throw;
     }
-    TransportCounters transport;
+    wire::TransportCounters transport;
     {
         std::lock_guard lock(mutex_);
         evaluator_ = nullptr;
@@ -153,7 +153,7 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     transport.stored_answers = stored ? stored->stored_answers() : 0;
     if (context_.stores)
         context_.stores->trim();
-    finish(result_message(problem, run, transport));
+    finish(wire::result_message(problem, run, transport));
 }
 
 design::RunSettings RequestRun::settings() const {

@@ -5,8 +5,8 @@
 
 #include "cluster/planner_memory.h"
 #include "cluster/planner_specs.h"
-#include "cluster/wire.h"
 #include "design/local_evaluator.h"
+#include "wire/job_messages.h"
 
 #include <map>
 #include <memory>
@@ -28,7 +28,7 @@ public:
             if (static_cast<int>(entries_.size()) >= max_)
                 entries_.clear(); // rare: more specs in use than kept; start over
             planning::PlannerOptions options;
-            options.heuristic = heuristic_kind(heuristic);
+            options.heuristic = wire::heuristic_kind(heuristic);
             // The search's share of the limit is what the process leaves of it now (code,
             // specs, caches; other workers' searches): the planner's size holds the limit.
             options.limits.memory_limit_bytes =

@@ -11,7 +11,7 @@
 //   DesignRun run = run_design(problem, log, &local.planner(), settings);
 //   run.result.best, run.explanation, run.warnings
 //
-// Presentation is the clients' (result_format.h); the message is cluster/result_message.h.
+// Presentation is the clients' (result_format.h); the message is wire/result_message.h.
 
 #include "design/design_explanation.h"
 #include "design/design_search.h"

@@ -4,9 +4,9 @@
 
 #include "harness.h"
 
-#include "cluster/wire.h"
 #include "envdesign/cancel_t.hpp"
 #include "envdesign/planner_heartbeat_t.hpp"
+#include "wire/job_messages.h"
 
 #include <fstream>
 
@@ -84,11 +84,11 @@ private:
         e.coordinator = job.sender;
         e.job_id = job.job_id;
         e.kind = job.kind;
-        design::Configuration c = configuration_of(job);
+        design::Configuration c = wire::configuration_of(job);
         if (job.kind == envdesign::job_t::KIND_ROBOT_BOUND)
-            put_robot_bound(evaluator_.robot_cost_bound(c, job.task, {}), e);
+            wire::put_robot_bound(evaluator_.robot_cost_bound(c, job.task, {}), e);
         else
-            put_explicability(evaluator_.evaluate_task(c, job.task, {}), e);
+            wire::put_explicability(evaluator_.evaluate_task(c, job.task, {}), e);
         return e;
     }
 

@@ -6,7 +6,6 @@
 #include "bus/channels.h"
 #include "cluster/coordinator.h"
 #include "cluster/planner.h"
-#include "cluster/result_message.h"
 #include "design/design_explanation.h"
 #include "design/design_search.h"
 #include "design/local_evaluator.h"
@@ -15,6 +14,7 @@
 #include "result_format.h"
 #include "spec/design_spec.h"
 #include "spec/spec_bundle.h"
+#include "wire/result_message.h"
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
@@ -45,8 +45,8 @@ inline nlohmann::json local_result(const std::string &spec_path) {
     design::EvaluationLog log(problem, evaluator);
     design::RunSettings settings;
     settings.time_limit_s = 0; // none: the reference is the proven answer
-    return client::result_json_value(
-        result_message(problem, design::run_design(problem, log, &evaluator.planner(), settings)));
+    return client::result_json_value(wire::result_message(
+        problem, design::run_design(problem, log, &evaluator.planner(), settings)));
 }
 
 // The fields of SPEC.md's result that do not depend on how the work was spread (the witness

@@ -3,12 +3,12 @@
 // reading, and the plan diff marks what differs.
 
 #include "bus/codec.h"
-#include "cluster/result_message.h"
 #include "design/design_explanation.h"
 #include "design/local_evaluator.h"
 #include "plan_diff.h"
 #include "result_format.h"
 #include "spec/design_spec.h"
+#include "wire/result_message.h"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,8 @@ envdesign::design_result_t explained_restaurant() {
     settings.time_limit_s = 0;
     settings.max_design_size = 0; // every size, as the message's reference
     settings.ranking = 3;
-    return result_message(problem, design::run_design(problem, log, &local.planner(), settings));
+    return wire::result_message(problem,
+                                design::run_design(problem, log, &local.planner(), settings));
 }
 
 // What --connect prints is what the local run prints: the explanation and the ranking

@@ -1,8 +1,8 @@
 // The numbers that come into the coordinator and the planners on the wire (issue 21): the
 // first byte picks a message type, the rest is decoded as it (the LCM encoding, as a
 // Bus handler would decode it) and put through the check its receiver runs:
-//   evaluation_t         cluster::evaluation_problem for either job kind (the router)
-//   job_t                cluster::job_problem against a 3-task, 4-modification problem
+//   evaluation_t         wire::evaluation_problem for either job kind (the router)
+//   job_t                wire::job_problem against a 3-task, 4-modification problem
 //   planner_heartbeat_t  cluster::heartbeat_problem (the planner pool)
 //   design_request_t     cluster::request_problem (the coordinator)
 // Whatever passes must hold only finite numbers in their ranges (INF only where it means
@@ -12,7 +12,6 @@
 #include "bus/codec.h"
 #include "cluster/coordinator.h"
 #include "cluster/planner_pool.h"
-#include "cluster/wire.h"
 #include "design/deadline.h"
 #include "design/evaluation_record.h"
 #include "design/numbers.h"
@@ -20,6 +19,7 @@
 #include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"
 #include "envdesign/planner_heartbeat_t.hpp"
+#include "wire/job_messages.h"
 
 #include <cmath>
 #include <cstdint>
@@ -44,12 +44,12 @@ bool cost_or_none(double c) {
 
 void evaluation(const evaluation_t &e) {
     for (std::int8_t kind : {job_t::KIND_ROBOT_BOUND, job_t::KIND_EXPLICABILITY}) {
-        if (cluster::evaluation_problem(e, kind))
+        if (wire::evaluation_problem(e, kind))
             continue;
         design::Job job{};
         job.kind = kind == job_t::KIND_ROBOT_BOUND ? design::JobKind::ROBOT_BOUND
                                                    : design::JobKind::EXPLICABILITY;
-        design::JobAnswer answer = cluster::job_answer(job, e);
+        design::JobAnswer answer = wire::job_answer(job, e);
         if (kind == job_t::KIND_ROBOT_BOUND) {
             require(!answer.robot_bound || cost_or_none(*answer.robot_bound));
             continue;
@@ -77,7 +77,7 @@ void job(const job_t &m) {
     design::DesignProblem problem;
     problem.tasks.resize(3);
     problem.modifications.resize(4);
-    if (cluster::job_problem(m, problem))
+    if (wire::job_problem(m, problem))
         return;
     require(m.kind == job_t::KIND_ROBOT_BOUND || m.kind == job_t::KIND_EXPLICABILITY);
     require(m.task >= 0 && m.task < 3);

@@ -1,6 +1,6 @@
 #pragma once
 // The one result formatter: design_result_t (the message ENVDESIGN_RESULT carries, which the
-// local CLI builds too, cluster/result_message.h) -> what `envdesign design` and `evaluate`
+// local CLI builds too, wire/result_message.h) -> what `envdesign design` and `evaluate`
 // print, as SPEC.md's JSON (full precision) or as text (rounded for reading), and the
 // report's HTML (report_html.h). docs/result.md explains every field.
 

@@ -1,8 +1,8 @@
-#include "cluster/explanation_message.h"
+#include "wire/explanation_message.h"
 
-#include "cluster/wire_explanation.h"
+#include "wire/model_explanation_message.h"
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 namespace {
 
 std::int16_t length(std::size_t size) { return static_cast<std::int16_t>(size); }
@@ -139,4 +139,4 @@ envdesign::explanation_t empty_explanation() {
     return m;
 }
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire

@@ -3,18 +3,18 @@
 // jobs (dispatcher.h's Job plus its configuration), their answers (TaskExplicability or a
 // robot-cost bound); the result of a search is result_message.h's.
 
-#include "cluster/result_message.h"
 #include "design/design_search.h"
 #include "design/dispatcher.h"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"
 #include "heuristics/heuristic.h"
+#include "wire/result_message.h"
 
 #include <optional>
 #include <string>
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 
 // design_request_t::HEURISTIC_* -> the planner's heuristic (unknown values: LM-cut).
 heuristics::HeuristicKind heuristic_kind(std::int8_t heuristic);
@@ -42,4 +42,4 @@ void put_robot_bound(std::optional<double> bound, envdesign::evaluation_t &evalu
 // The dispatcher's view of an answer that passed evaluation_problem.
 design::JobAnswer job_answer(const design::Job &job, const envdesign::evaluation_t &evaluation);
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire

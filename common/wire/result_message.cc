@@ -1,10 +1,10 @@
-#include "cluster/result_message.h"
+#include "wire/result_message.h"
 
-#include "cluster/explanation_message.h"
+#include "wire/explanation_message.h"
 
 #include <limits>
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 namespace {
 
 constexpr double NOT_KNOWN = std::numeric_limits<double>::quiet_NaN();
@@ -135,4 +135,4 @@ envdesign::design_result_t error_result(int exit_code, const std::string &messag
     return m;
 }
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire

@@ -7,7 +7,7 @@
 #include "envdesign/explanation_t.hpp"
 #include "envdesign/task_result_t.hpp"
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 
 envdesign::design_terms_t terms_message(const design::Objective &objective);
 // Task `i` of `problem`; in EXPLAINING mode with the option the robot takes.
@@ -21,4 +21,4 @@ envdesign::explanation_t explanation_message(const design::DesignProblem &proble
 // An explanation_t with every field set (sent when there is none: has_explanation false).
 envdesign::explanation_t empty_explanation();
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire

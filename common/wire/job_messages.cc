@@ -1,14 +1,14 @@
-#include "cluster/wire.h"
+#include "wire/job_messages.h"
 
 #include "bus/log.h"
-#include "cluster/wire_explanation.h"
 #include "design/numbers.h"
 #include "design/objective.h"
 #include "envdesign/design_request_t.hpp"
+#include "wire/model_explanation_message.h"
 
 #include <cmath>
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 namespace {
 
 using envdesign::evaluation_t;
@@ -154,4 +154,4 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
     return answer;
 }
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 
 envdesign::model_explanation_t model_explanation_message(const design::TaskExplanation &x);
 design::TaskExplanation model_explanation_value(const envdesign::model_explanation_t &m);
@@ -20,4 +20,4 @@ design::TaskExplanation model_explanation_value(const envdesign::model_explanati
 void put_option(const design::ObjectiveWeights &weights, const design::TaskExplicability &t,
                 envdesign::task_result_t &m);
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire

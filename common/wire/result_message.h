@@ -8,7 +8,7 @@
 
 #include <string>
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 
 // Counters only the coordinator knows, for design_result_t.counters.
 struct TransportCounters {
@@ -34,4 +34,4 @@ constexpr std::size_t MAX_WARNINGS = 1000;
 // design_result_t of a request that failed: `exit_code` 2 (bad input) or 1.
 envdesign::design_result_t error_result(int exit_code, const std::string &message);
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire

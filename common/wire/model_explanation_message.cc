@@ -1,10 +1,10 @@
-#include "cluster/wire_explanation.h"
+#include "wire/model_explanation_message.h"
 
 #include "design/explaining.h"
 
 #include <cmath>
 
-namespace envdesign::cluster {
+namespace envdesign::wire {
 
 envdesign::model_explanation_t model_explanation_message(const design::TaskExplanation &x) {
     envdesign::model_explanation_t m;
@@ -42,4 +42,4 @@ void put_option(const design::ObjectiveWeights &weights, const design::TaskExpli
     }
 }
 
-} // namespace envdesign::cluster
+} // namespace envdesign::wire
