@@ -1,6 +1,7 @@
 #include "evaluate_command.h"
 
 #include "cli_error.h"
+#include "design_warnings.h"
 #include "local_run.h"
 #include "result_format.h"
 
@@ -54,8 +55,10 @@ int run_evaluate(const EvaluateFlags &flags) {
     } catch (const design::UnknownModification &e) {
         throw CommandError(2, std::string("--design: ") + e.what());
     }
-    double seconds = flags.time_limit_s >= 0 ? flags.time_limit_s : problem->time_limit_s;
-    design::Deadline deadline = design::Deadline::in(seconds);
+    print_warnings(problem->warnings);
+    design::RunSettings settings;
+    settings.time_limit_s = flags.time_limit_s;
+    design::Deadline deadline = design::search_options(*problem, settings).deadline;
     LocalRun run(*problem, flags.workers, flags.heuristic);
     design::DesignResult result =
         design::evaluate_design(*problem, run.evaluator(), configuration, deadline);

@@ -144,8 +144,9 @@ public:
     // an unauthenticated bus. Binds a later message to the process that sent an earlier one.
     std::uint64_t message_sender() const { return message_sender_; }
     // In a handler: the process the message says it comes from: the verified sender with
-    // keys; without, the origin it declares (auth.h: unproven), 0 when it declares none or
-    // is this bus's own (in-process traffic, memq://). The unit of admission and fair shares.
+    // keys (this bus's own included); without, the origin it declares (auth.h: unproven), 0
+    // when it declares none or is this bus's own (in-process traffic, memq://). The unit of
+    // admission and fair shares (cluster/coordinator.h's client_unit).
     std::uint64_t message_origin() const { return message_origin_; }
 
 private:

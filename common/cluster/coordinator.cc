@@ -163,7 +163,7 @@ void Coordinator::on_request(const design_request_t &request) {
         return;
     }
     const std::string client = client_unit(bus_.message_origin(), request.sender);
-    if (auto why = busy(client)) {
+    if (auto why = busy(client, request.sender)) {
         bus_.log().warn("request {} | refused, busy: {}", name, *why);
         auto result =
             wire::error_result(1, "the coordinator is busy (" + *why + "); try again later");
@@ -203,16 +203,20 @@ std::string client_unit(std::uint64_t origin, const std::string &name) {
     return std::string("process ") + hex;
 }
 
-// Why a new request of `client` (a unit) cannot be taken now (nullopt: it can).
-std::optional<std::string> Coordinator::busy(const std::string &client) const {
-    int mine = 0, active = 0;
+// Why a new request of `sender` from `client` (its unit) cannot be taken now (nullopt: it can).
+std::optional<std::string> Coordinator::busy(const std::string &client,
+                                             const std::string &sender) const {
+    int of_unit = 0, of_name = 0, active = 0;
     for (const auto &[name, open] : open_) {
-        mine += open.client == client ? 1 : 0;
+        of_unit += open.client == client ? 1 : 0;
+        of_name += open.run->request().sender == sender ? 1 : 0;
         active += open.started ? 1 : 0;
     }
-    if (mine >= config_.max_per_client)
-        return std::to_string(mine) + " requests of " + client + " are open, at most " +
-               std::to_string(config_.max_per_client);
+    // Both: one process's many names, and one name's many processes (the client library
+    // opens a bus, so an origin, per call).
+    if (of_unit >= config_.max_per_client || of_name >= config_.max_per_client)
+        return std::to_string(std::max(of_unit, of_name)) + " requests of " + sender + " (" +
+               client + ") are open, at most " + std::to_string(config_.max_per_client);
     if (active >= config_.max_active && static_cast<int>(waiting_.size()) >= config_.max_waiting)
         return std::to_string(waiting_.size()) + " requests are waiting, at most " +
                std::to_string(config_.max_waiting);

@@ -63,7 +63,7 @@ struct CoordinatorConfig {
     // of requests that never end must not keep another client's request from starting.
     int max_active = 64;
     int max_waiting = 64;   // requests waiting for a search slot, from all clients
-    int max_per_client = 8; // requests searching or waiting per client (client_unit)
+    int max_per_client = 8; // requests searching or waiting per client_unit, and per name
     // The largest spec a request may carry (its text and files); larger is bad input.
     std::size_t max_spec_bytes = DEFAULT_MAX_SPEC_BYTES;
     PoolConfig pool;
@@ -132,7 +132,7 @@ private:
     };
 
     void on_request(const envdesign::design_request_t &request);
-    std::optional<std::string> busy(const std::string &client) const;
+    std::optional<std::string> busy(const std::string &client, const std::string &sender) const;
     void on_cancel(const envdesign::cancel_t &cancel);
     void on_keepalive(const envdesign::keepalive_t &keepalive);
     void drop_silent(Clock::time_point now);

@@ -63,7 +63,7 @@ DesignRun run_design(const DesignProblem &problem, EvaluationLog &log, PlanCache
     run.result = search_design(problem, log, options, progress);
     run.warnings = problem.warnings;
     const bool stopped = settings.stop && settings.stop->load();
-    if (!settings.explain || (stopped && !settings.explain_when_stopped))
+    if (stopped && !settings.explain_when_stopped)
         return run;
     if (planner && run.result.baseline) {
         auto lines =

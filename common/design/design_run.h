@@ -41,7 +41,6 @@ struct RunSettings {
     // The answer of a stopped run is explained all the same (the CLI prints it); a cancelled
     // request's is not wanted.
     bool explain_when_stopped = true;
-    bool explain = true; // false: the result alone (no planning past the search)
 };
 
 // The search options `settings` give for `problem` (the relevance pruning left unset: it

@@ -76,10 +76,24 @@ std::string no_finite_design(const design::DesignProblem &problem,
 }
 
 std::vector<std::string> warnings_message(const std::vector<std::string> &warnings) {
-    if (warnings.size() <= MAX_WARNINGS)
-        return warnings;
-    std::vector<std::string> out(warnings.begin(), warnings.begin() + MAX_WARNINGS - 1);
-    out.push_back("... and " + std::to_string(warnings.size() - out.size()) + " more warnings");
+    std::vector<std::string> out;
+    for (const auto &line : warnings) {
+        if (out.size() + 1 == MAX_WARNINGS && warnings.size() > MAX_WARNINGS) {
+            out.push_back("... and " + std::to_string(warnings.size() - out.size()) +
+                          " more warnings");
+            break;
+        }
+        if (line.size() <= MAX_WARNING_BYTES) {
+            out.push_back(line);
+            continue;
+        }
+        std::string cut = line.substr(0, MAX_WARNING_BYTES);
+        while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80)
+            cut.pop_back(); // not inside a UTF-8 character
+        if (!cut.empty() && static_cast<unsigned char>(cut.back()) >= 0xC0)
+            cut.pop_back();
+        out.push_back(cut + " ... (" + std::to_string(line.size() - cut.size()) + " bytes more)");
+    }
     return out;
 }
 

@@ -27,9 +27,11 @@ envdesign::design_result_t result_message(const design::DesignProblem &problem,
                                           const design::DesignRun &run,
                                           const TransportCounters &transport = {});
 
-// At most this many warnings travel (the message counts them in an int16); a last line says
-// how many more there were.
+// At most this many warnings travel (the message counts them in an int16), each cut to
+// MAX_WARNING_BYTES: a warning may quote a goal, and a result must stay far below the bus's
+// largest message. A last line says how many more there were.
 constexpr std::size_t MAX_WARNINGS = 1000;
+constexpr std::size_t MAX_WARNING_BYTES = 1024;
 
 // design_result_t of a request that failed: `exit_code` 2 (bad input) or 1.
 envdesign::design_result_t error_result(int exit_code, const std::string &message);

@@ -42,6 +42,41 @@ TEST(Bounds, RequestsBeyondTheLimitsAreAnsweredBusy) {
     EXPECT_EQ(cluster.coordinator().stats().open, 2);
 }
 
+// `r` as the process `origin` sends it (its bus's origin trailer, bus/auth.h).
+void publish_from(bus::Bus &bus, std::uint64_t origin, const envdesign::design_request_t &r) {
+    std::string bytes = bus::encode_message(r);
+    std::string wire = bus::with_origin(origin, bytes.data(), bytes.size());
+    bus.publish_raw(bus::REQUEST, wire.data(), static_cast<int>(wire.size()));
+}
+
+// --max-per-client counts by process and by name: forty names of one process once each had
+// 8 (issue 21), and a name's requests from several buses (the client library opens one per
+// call) are still that name's.
+TEST(Bounds, APerClientLimitCountsByProcessAndByName) {
+    MemqCluster cluster(0, 1, {}, [](CoordinatorConfig &c) {
+        c.max_active = 1;
+        c.max_per_client = 2;
+    });
+    constexpr std::uint64_t A = 0xa, B = 0xb, C = 0xc, D = 0xd;
+    publish_from(cluster.bus(), A, from("a", 1)); // process A: searches
+    publish_from(cluster.bus(), A, from("b", 2)); // process A: waits
+    publish_from(cluster.bus(), A, from("c", 3));
+    auto third = cluster.wait(3, 5);
+    EXPECT_EQ(third.exit_code, 1);
+    EXPECT_NE(third.error.find("busy"), std::string::npos) << third.error;
+    EXPECT_NE(third.error.find("process 000000000000000a"), std::string::npos) << third.error;
+    publish_from(cluster.bus(), B, from("c", 4)); // another process: taken
+    publish_from(cluster.bus(), C, from("c", 5)); // name c's second: taken
+    publish_from(cluster.bus(), D, from("c", 6));
+    auto by_name = cluster.wait(6, 5);
+    EXPECT_EQ(by_name.exit_code, 1);
+    EXPECT_NE(by_name.error.find("requests of c "), std::string::npos) << by_name.error;
+    EXPECT_EQ(cluster.coordinator().stats().busy, 2);
+    EXPECT_EQ(cluster.coordinator().stats().open, 4);
+    for (std::int64_t id : {1, 2, 4, 5})
+        EXPECT_FALSE(cluster.answered(id)) << id;
+}
+
 // Keep-alives for the searching request only; the waiting one is told when repeated.
 TEST(Bounds, ProgressOnlyForSearchingRequests) {
     MemqCluster cluster(0, 1, {}, [](CoordinatorConfig &c) { c.max_active = 1; });

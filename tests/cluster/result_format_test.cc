@@ -43,6 +43,28 @@ TEST(ResultFormat, ExplanationSurvivesTheWire) {
     EXPECT_EQ(j.at("explanation").at("tasks")[0].at("robot_optimal_cost"), 7);
 }
 
+// Warnings travel in the result, bounded: 1500 lines of 3000 bytes (a warning may quote a
+// goal) become 1000 lines of at most 1 KiB and a count of the rest, so that a result stays
+// far below the bus's largest message; short lines go as they are.
+TEST(ResultFormat, WarningsTravelBounded) {
+    design::DesignProblem problem = spec::load_design_problem(
+        std::string(ENVDESIGN_TEST_DATA_ROOT) + "/examples/restaurant/c-two-tasks-t10.textproto");
+    design::DesignRun run;
+    run.warnings.push_back("spec:1:1: warning: short");
+    for (int i = 0; i < 1500; ++i)
+        run.warnings.push_back(std::string(2999, 'g') + "\xc3\xa9"); // ends in a 2-byte UTF-8
+    envdesign::design_result_t sent = wire::result_message(problem, run);
+    ASSERT_EQ(sent.warnings.size(), wire::MAX_WARNINGS);
+    EXPECT_EQ(sent.num_warnings, static_cast<int>(wire::MAX_WARNINGS));
+    EXPECT_EQ(sent.warnings[0], "spec:1:1: warning: short");
+    EXPECT_EQ(sent.warnings[1], std::string(1024, 'g') + " ... (1977 bytes more)");
+    EXPECT_EQ(sent.warnings.back(), "... and 502 more warnings");
+    EXPECT_LT(bus::encode_message(sent).size(), 1100u * 1024);
+    envdesign::design_result_t received;
+    ASSERT_TRUE(bus::decode_message(bus::encode_message(sent), received));
+    EXPECT_EQ(client::result_json_value(received).at("warnings").size(), wire::MAX_WARNINGS);
+}
+
 TEST(ResultFormat, NumbersForPeople) {
     EXPECT_EQ(client::shown(85.263215599), "85.26");
     EXPECT_EQ(client::shown(6.513215599000001), "6.513");
