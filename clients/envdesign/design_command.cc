@@ -6,7 +6,7 @@
 #include "progress.h"
 #include "result_format.h"
 
-#include "design/numbers.h"
+#include "design/model/numbers.h"
 #include "service/number_flag.h"
 #include "spec/design_spec.h"
 #include "wire/result_message.h"

@@ -15,7 +15,7 @@ struct DesignFlags {
     int max_design_size = -1; // < 0: the spec's max_design_size
     std::string search = "witness";
     int ranking = 0;          // the N best designs (0: the best alone)
-    bool ranking_all = false; // padded designs in the ranking too (design/ranking.h)
+    bool ranking_all = false; // padded designs in the ranking too (design/search/ranking.h)
     std::string prune = "none";
     std::string heuristic = "lmcut";
     std::string connect;  // LCM URL of a running coordinator; --workers does not apply then

@@ -5,7 +5,7 @@
 #include "local_run.h"
 #include "result_format.h"
 
-#include "design/evaluate_design.h"
+#include "design/evaluation/evaluate_design.h"
 #include "spec/design_spec.h"
 #include "wire/result_message.h"
 

@@ -1,6 +1,6 @@
 #include "explicable_command.h"
 
-#include "design/explicability.h"
+#include "design/behaviour/explicability.h"
 #include "pddl/parser.h"
 #include "result_format.h"
 #include "service/number_flag.h"

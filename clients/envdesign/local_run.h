@@ -5,8 +5,8 @@
 // coordinator sends (wire/result_message.h), so that one formatter prints both paths.
 
 #include "design/design_run.h"
-#include "design/evaluation_log.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/evaluation_log.h"
+#include "design/evaluation/local_evaluator.h"
 
 #include <CLI/CLI.hpp>
 

@@ -3,7 +3,7 @@
 // total, best objective, planner runs, cache hits), redrawn at most ten times a second;
 // otherwise nothing until the one summary line of finish().
 
-#include "design/design_search.h"
+#include "design/search/design_search.h"
 
 #include <chrono>
 #include <cstdio>

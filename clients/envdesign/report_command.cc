@@ -7,8 +7,8 @@
 #include "report_floor.h"
 #include "report_html.h"
 
-#include "design/configuration.h"
-#include "design/explicability.h"
+#include "design/behaviour/explicability.h"
+#include "design/model/configuration.h"
 #include "pddl/parse_error.h"
 #include "spec/design_spec.h"
 #include "wire/result_message.h"

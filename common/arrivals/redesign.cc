@@ -1,7 +1,7 @@
 #include "arrivals/redesign.h"
 
-#include "design/compilation.h"
-#include "design/objective.h"
+#include "design/model/compilation.h"
+#include "design/objective/objective.h"
 #include "ground/grounder.h"
 #include "pddl/parser.h"
 

@@ -27,8 +27,8 @@
 #include "arrivals/distribution.h"
 #include "arrivals/tracker.h"
 #include "design/design_run.h"
-#include "design/local_evaluator.h"
-#include "design/stored_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/evaluation/stored_evaluator.h"
 
 #include <memory>
 #include <optional>

@@ -4,7 +4,7 @@
 #include "bus/log.h"
 #include "cluster/design_change.h"
 #include "cluster/spec_chunks.h"
-#include "design/numbers.h"
+#include "design/model/numbers.h"
 #include "store/state_dir.h"
 #include "wire/job_messages.h"
 

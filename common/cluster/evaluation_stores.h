@@ -1,5 +1,5 @@
 #pragma once
-// The coordinator's task evaluations, kept across requests (design/evaluation_store.h):
+// The coordinator's task evaluations, kept across requests (design/evaluation/evaluation_store.h):
 // one EvaluationStore per store key, so that a request that differs from an earlier one only
 // in its task distribution, its weights or added tasks (what envdesign-bridge sends when the
 // distribution drifts) is a re-weighting of what the planners answered before, not a
@@ -11,7 +11,7 @@
 // finds what the file holds; dropping a store here frees memory only.
 // Thread-safe.
 
-#include "design/evaluation_store.h"
+#include "design/evaluation/evaluation_store.h"
 
 #include <cstddef>
 #include <list>

@@ -1,8 +1,8 @@
 #pragma once
-// The Evaluator (design/evaluator.h) of the networked coordinator: the same Dispatcher as
-// the in-process LocalEvaluator, with jobs sent to planner services through a JobRouter
-// instead of to threads. Jobs in flight are capped by the planners' free slots, so that
-// `abandon` sees answers as early as in-process.
+// The Evaluator (design/evaluation/evaluator.h) of the networked coordinator: the same Dispatcher
+// as the in-process LocalEvaluator, with jobs sent to planner services through a JobRouter instead
+// of to threads. Jobs in flight are capped by the planners' free slots, so that `abandon` sees
+// answers as early as in-process.
 //
 // Faults are the router's business (re-sends, duplicates); this class only stops waiting:
 // once the deadline passed it gives planners `grace_s` to answer LIMIT, and on cancel it
@@ -11,8 +11,8 @@
 
 #include "cluster/job_router.h"
 #include "design/design_problem.h"
-#include "design/dispatcher.h"
-#include "design/evaluator.h"
+#include "design/evaluation/dispatcher.h"
+#include "design/evaluation/evaluator.h"
 
 #include <atomic>
 #include <functional>
@@ -56,7 +56,7 @@ public:
 
     void wake() { inbox_.wake(); }
     // Called with every answer as it arrives, before the search sees it (a durable store
-    // keeps it there: design/stored_evaluator.h); same thread as evaluate().
+    // keeps it there: design/evaluation/stored_evaluator.h); same thread as evaluate().
     using AnswerSink =
         std::function<void(const design::Configuration &, const design::JobAnswer &)>;
     void on_answer(AnswerSink sink) { sink_ = std::move(sink); }

@@ -30,7 +30,7 @@
 // Thread-safe.
 
 #include "cluster/fair_share.h"
-#include "design/numbers.h"
+#include "design/model/numbers.h"
 #include "envdesign/job_t.hpp"
 #include "envdesign/planner_heartbeat_t.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "cluster/planner_memory.h"
 #include "cluster/planner_specs.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
 #include "wire/job_messages.h"
 
 #include <map>

@@ -1,6 +1,6 @@
 #include "design/design_explanation.h"
 
-#include "design/explicability.h"
+#include "design/behaviour/explicability.h"
 
 #include <algorithm>
 #include <map>

@@ -17,10 +17,10 @@
 //   DesignResult result = search_design(problem, log, options);
 //   DesignExplanation why = explain_design(problem, result, log, &evaluator.planner(), deadline);
 
-#include "design/break_even.h"
-#include "design/design_search.h"
-#include "design/evaluation_log.h"
-#include "design/plan_cache.h"
+#include "design/evaluation/evaluation_log.h"
+#include "design/evaluation/plan_cache.h"
+#include "design/objective/break_even.h"
+#include "design/search/design_search.h"
 
 #include <optional>
 #include <string>

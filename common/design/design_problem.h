@@ -9,7 +9,7 @@
 // explicability.h); the objective combines the tasks (objective.h); the search ranges over
 // configurations (design_search.h).
 
-#include "design/edits.h"
+#include "design/model/edits.h"
 #include "pddl/task.h"
 
 #include <string>

@@ -1,7 +1,7 @@
 #include "design/design_run.h"
 
-#include "design/relevance.h"
-#include "design/unsolvable_tasks.h"
+#include "design/evaluation/relevance.h"
+#include "design/evaluation/unsolvable_tasks.h"
 
 #include <algorithm>
 

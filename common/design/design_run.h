@@ -14,9 +14,9 @@
 // Presentation is the clients' (result_format.h); the message is wire/result_message.h.
 
 #include "design/design_explanation.h"
-#include "design/design_search.h"
-#include "design/evaluation_log.h"
-#include "design/plan_cache.h"
+#include "design/evaluation/evaluation_log.h"
+#include "design/evaluation/plan_cache.h"
+#include "design/search/design_search.h"
 
 #include <atomic>
 #include <functional>

@@ -16,7 +16,7 @@
 namespace envdesign::floor {
 
 // A task's weight, at most: the spec's range for a task's weight (TASK_WEIGHT,
-// design/numbers.h), so that the sum of MAX_TASKS of them is finite (issue 21: two weights of
+// design/model/numbers.h), so that the sum of MAX_TASKS of them is finite (issue 21: two weights of
 // 1.7e308 summed to inf, and every probability written was 0).
 inline constexpr double MAX_TASK_WEIGHT = 1e12;
 

@@ -25,7 +25,7 @@ struct GroundingStatistics {
 // (e.g. an action cost refers to a function value the problem does not give), and
 // GroundingStopped when `stop` says so (ground/stop.h). `prune_irrelevant` false keeps the
 // operators that change no fact the goal needs: every plan of the model stays a plan of the
-// task (the design engine follows arbitrary action sequences in it, design/worst_case.h).
+// task (the design engine follows arbitrary action sequences in it, design/behaviour/worst_case.h).
 GroundTask ground(const pddl::Domain &domain, const pddl::Problem &problem,
                   GroundingStatistics *statistics = nullptr, const StopCheck &stop = {},
                   bool prune_irrelevant = true);

@@ -17,7 +17,7 @@ void remove_always_true(GroundTask &task);
 // Drops facts that no precondition and no goal reads, and keeps every operator (one that
 // then changes nothing stays, as a step that leaves the state as it is). Whether a sequence
 // of operators is a plan, and what it costs, does not change; states that differed only in
-// such facts become one (design/optimal_plan_graph.h follows every plan of the task).
+// such facts become one (design/behaviour/optimal_plan_graph.h follows every plan of the task).
 void remove_unread(GroundTask &task);
 
 // Drops facts that no goal needs, directly or through the preconditions of an operator that

@@ -1,10 +1,10 @@
 #pragma once
-// The check of every number flag (design/numbers.h's rule): CLI11's own PositiveNumber and
+// The check of every number flag (design/model/numbers.h's rule): CLI11's own PositiveNumber and
 // Range let NaN and inf through, and a service then ran with them.
 //
 //   app.add_option("--time-limit", seconds)->check(service::number_in(design::TIME_LIMIT_S));
 
-#include "design/numbers.h"
+#include "design/model/numbers.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,6 +1,6 @@
 #include "spec/design_spec.h"
 
-#include "design/numbers.h"
+#include "design/model/numbers.h"
 #include "pddl/parser.h"
 #include "spec/spec_checks.h"
 
@@ -159,7 +159,7 @@ private:
 
     void load_weights() {
         ObjectiveWeights &w = problem_.weights;
-        // Every number in its range (design/numbers.h), named where it is.
+        // Every number in its range (design/model/numbers.h), named where it is.
         auto number = [&](bool has, double value, double fallback, const char *field,
                           design::NumberRange range) {
             double v = has ? value : fallback;

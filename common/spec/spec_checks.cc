@@ -1,7 +1,7 @@
 #include "spec/spec_checks.h"
 
-#include "design/compilation.h"
-#include "design/configuration.h"
+#include "design/model/compilation.h"
+#include "design/model/configuration.h"
 #include "ground/grounder.h"
 
 #include <algorithm>

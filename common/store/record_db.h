@@ -4,7 +4,7 @@
 // Records are immutable values named by a digest of what they mean (digest.h): a record
 // once written is never changed, so a second write of the same name is a no-op, and any
 // process that computes the same name may use the value. The coordinator keeps its task
-// evaluations here (design/evaluation_store.h), so that they survive restarts.
+// evaluations here (design/evaluation/evaluation_store.h), so that they survive restarts.
 //
 // Durability: put() returns after its transaction committed. With sync (the default) the
 // WAL is fsync'ed on every commit, so a record that put() returned survives a power loss

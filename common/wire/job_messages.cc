@@ -1,8 +1,8 @@
 #include "wire/job_messages.h"
 
 #include "bus/log.h"
-#include "design/numbers.h"
-#include "design/objective.h"
+#include "design/model/numbers.h"
+#include "design/objective/objective.h"
 #include "envdesign/design_request_t.hpp"
 #include "wire/model_explanation_message.h"
 
@@ -91,7 +91,7 @@ std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t
                    : std::nullopt;
     if (e.status != evaluation_t::STATUS_SOLVED && e.status != evaluation_t::STATUS_INEXPLICABLE)
         return std::nullopt;
-    // The same check as a record read back from the store (design/numbers.h).
+    // The same check as a record read back from the store (design/model/numbers.h).
     return design::evaluation_problem(job_answer(design::Job{}, e).explicability);
 }
 

@@ -3,8 +3,8 @@
 // jobs (dispatcher.h's Job plus its configuration), their answers (TaskExplicability or a
 // robot-cost bound); the result of a search is result_message.h's.
 
-#include "design/design_search.h"
-#include "design/dispatcher.h"
+#include "design/evaluation/dispatcher.h"
+#include "design/search/design_search.h"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"

@@ -1,6 +1,6 @@
 #include "wire/model_explanation_message.h"
 
-#include "design/explaining.h"
+#include "design/behaviour/explaining.h"
 
 #include <cmath>
 

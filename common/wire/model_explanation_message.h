@@ -3,7 +3,7 @@
 // (TaskExplanation <-> model_explanation_t) and, in a result, the option the robot takes.
 
 #include "design/design_problem.h"
-#include "design/task_evaluation.h"
+#include "design/evaluation/task_evaluation.h"
 #include "envdesign/model_explanation_t.hpp"
 #include "envdesign/task_result_t.hpp"
 

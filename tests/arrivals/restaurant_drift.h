@@ -3,8 +3,8 @@
 // where a helper each file defined for itself would clash.
 
 #include "arrivals/distribution.h"
-#include "design/design_search.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/search/design_search.h"
 
 #include "spec/design_spec.h"
 

@@ -1,4 +1,4 @@
-// Every number that enters is finite and in its range (issue 21, design/numbers.h): the
+// Every number that enters is finite and in its range (issue 21, design/model/numbers.h): the
 // spec numbers that aborted `envdesign design` inside the integer-program solver (beta 1e25,
 // a modification cost of 1e24, exit 134 and no JSON) and the ones that gave an "optimal"
 // inf, -inf or 0 objective are bad input at their line; numbers at the top of the ranges

@@ -4,7 +4,7 @@
 
 #include "bus/codec.h"
 #include "design/design_explanation.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
 #include "plan_diff.h"
 #include "result_format.h"
 #include "spec/design_spec.h"

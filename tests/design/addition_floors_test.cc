@@ -1,6 +1,6 @@
 // The floors that adding modifications can bring (addition_floors.h), on a floor small
 // enough to work out by hand.
-#include "design/addition_floors.h"
+#include "design/search/addition_floors.h"
 
 #include "spec/design_spec.h"
 

@@ -1,8 +1,8 @@
 // The Blocksworld design example (examples/blocksworld): schema edits on both models, a
 // new predicate, and a modification that changes no ground task.
 
-#include "design/design_search.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/search/design_search.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>

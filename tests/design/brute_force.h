@@ -3,8 +3,8 @@
 // sequences and checking each with the plan validator (validate/, which shares no code with
 // the compilation, the grounder's relevance analysis or the search).
 
-#include "design/configuration.h"
-#include "design/explicability.h"
+#include "design/behaviour/explicability.h"
+#include "design/model/configuration.h"
 #include "ground/grounder.h"
 #include "validate/plan_validator.h"
 

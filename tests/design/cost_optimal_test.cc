@@ -1,15 +1,15 @@
 // COST_OPTIMAL and COST_OPTIMAL_BEST_CASE (issue 14): IE_worst and IE_best from the
-// optimal-plan graph and its product with the human model (design/cost_optimal.h) against
+// optimal-plan graph and its product with the human model (design/behaviour/cost_optimal.h) against
 // enumerating every cost-optimal plan with the plan validator (optimal_plans_brute_force.h),
 // on seeded tiny tasks with zero-cost and equal-cost alternatives; and directed cases for
 // the choices the header documents (zero-cost cycles, plans not valid for the human).
 
 #include "optimal_plans_brute_force.h"
 
-#include "design/cost_optimal.h"
-#include "design/explicability.h"
-#include "design/optimal_plan_graph.h"
-#include "design/worst_case.h"
+#include "design/behaviour/cost_optimal.h"
+#include "design/behaviour/explicability.h"
+#include "design/behaviour/optimal_plan_graph.h"
+#include "design/behaviour/worst_case.h"
 #include "ground/grounder.h"
 #include "heuristics/make_heuristic.h"
 #include "pddl/parser.h"

@@ -2,10 +2,10 @@
 // paper's restaurant, setting (c), with the values worked out by hand, and break-even
 // checked against re-running the exact search at other horizons and alphas.
 
-#include "design/break_even.h"
 #include "design/design_explanation.h"
-#include "design/evaluate_design.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/evaluate_design.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/objective/break_even.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>
@@ -201,8 +201,8 @@ TEST(EvaluateDesign, KnownDesignAndUnknownNames) {
                  UnknownModification);
 }
 
-// robot_behaviour EXPLAINING (design/explaining.h): each task's choice between explaining and
-// acting explicably depends on the weights, so a design point re-chooses in objective_at. At
+// robot_behaviour EXPLAINING (design/behaviour/explaining.h): each task's choice between explaining
+// and acting explicably depends on the weights, so a design point re-chooses in objective_at. At
 // explanation_cost 20 the paper's barriers win (85.2632, both tasks act explicably); without
 // barrier-10-11, G1's observers expect 5 and see 7: act explicably costs e^2 * f_10 + 0.25 *
 // 10 * 7 per task, explaining (2 differences told) 1 * f_10 + 20 * 2 * f_10 + same robot

@@ -3,7 +3,7 @@
 // now gets from the run itself.
 
 #include "design/design_run.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
 #include "example_paths.h"
 #include "spec/design_spec.h"
 

@@ -4,7 +4,7 @@
 // edits, so only the exhaustive search applies (the witness search reads the edits:
 // witness_search_test.cc).
 
-#include "design/design_search.h"
+#include "design/search/design_search.h"
 
 #include <gtest/gtest.h>
 

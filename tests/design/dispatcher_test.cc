@@ -1,6 +1,6 @@
 // The dispatcher's job order: robot bounds first, then `abandon`, then explicability jobs.
 
-#include "design/dispatcher.h"
+#include "design/evaluation/dispatcher.h"
 
 #include <gtest/gtest.h>
 

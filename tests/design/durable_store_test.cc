@@ -2,10 +2,10 @@
 // back as written, names that change with what the record means, and a search answered from
 // a file another store wrote.
 
-#include "design/design_search.h"
-#include "design/evaluation_record.h"
-#include "design/local_evaluator.h"
-#include "design/stored_evaluator.h"
+#include "design/evaluation/evaluation_record.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/evaluation/stored_evaluator.h"
+#include "design/search/design_search.h"
 #include "example_paths.h"
 #include "spec/design_spec.h"
 

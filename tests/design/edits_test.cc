@@ -1,6 +1,6 @@
 // Every edit kind on a small hand-written model, its errors, and STRICT vs LENIENT.
 
-#include "design/edits.h"
+#include "design/model/edits.h"
 #include "ground/grounder.h"
 #include "pddl/parser.h"
 

@@ -3,10 +3,10 @@
 // search (witness, which falls back, and exhaustive) against evaluating every configuration
 // with no bound, on seeded generated design problems.
 
-#include "design/design_search.h"
-#include "design/evaluation_record.h"
-#include "design/explaining.h"
-#include "design/local_evaluator.h"
+#include "design/behaviour/explaining.h"
+#include "design/evaluation/evaluation_record.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/search/design_search.h"
 #include "example_paths.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"

@@ -2,8 +2,8 @@
 // against a brute-force enumeration checked by the independent plan validator.
 
 #include "brute_force.h"
-#include "design/compilation.h"
-#include "design/explicability.h"
+#include "design/behaviour/explicability.h"
+#include "design/model/compilation.h"
 #include "example_paths.h"
 #include "pddl/parser.h"
 #include "validate/plan_validator.h"

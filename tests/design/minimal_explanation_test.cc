@@ -3,8 +3,8 @@
 // enumeration of action sequences (brute_force.h, no planner); and hand-worked cases.
 
 #include "brute_force.h"
-#include "design/explicability.h"
-#include "design/minimal_explanation.h"
+#include "design/behaviour/explicability.h"
+#include "design/reconciliation/minimal_explanation.h"
 #include "example_paths.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"

@@ -1,8 +1,8 @@
-// The one rule for numbers that enter (design/numbers.h), and the store's records checked
+// The one rule for numbers that enter (design/model/numbers.h), and the store's records checked
 // with it when read back (issue 21).
 
-#include "design/evaluation_record.h"
-#include "design/numbers.h"
+#include "design/evaluation/evaluation_record.h"
+#include "design/model/numbers.h"
 
 #include <gtest/gtest.h>
 

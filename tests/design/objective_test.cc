@@ -1,7 +1,7 @@
 // The objective, its lower bound and the ranking, with every expected value worked out by
 // hand in the comments.
 
-#include "design/objective.h"
+#include "design/objective/objective.h"
 
 #include <gtest/gtest.h>
 

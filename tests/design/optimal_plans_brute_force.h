@@ -2,7 +2,7 @@
 // Independent reference values for COST_OPTIMAL and COST_OPTIMAL_BEST_CASE: every
 // cost-optimal plan of P_R is enumerated, by depth-first search over action sequences, each
 // checked with the plan validator (validate/, which shares no code with the grounder, the
-// search or design/optimal_plan_graph.h), and looked at in P_H.
+// search or design/behaviour/optimal_plan_graph.h), and looked at in P_H.
 //
 // Sequences are built from every action of either lifted domain applied to every tuple of
 // objects (no grounding, so no relevance pruning either). With zero-cost actions there are
@@ -13,8 +13,8 @@
 // the human cost unbounded. That is recorded when the repeated point still leads to a
 // complete optimal plan (the anchor's subtree found one).
 
-#include "design/configuration.h"
-#include "design/task_evaluation.h"
+#include "design/evaluation/task_evaluation.h"
+#include "design/model/configuration.h"
 #include "validate/plan_validator.h"
 
 #include <algorithm>

@@ -1,8 +1,8 @@
-// The ranking of the N best designs (common/design/ranking.h): its order and threshold by
+// The ranking of the N best designs (common/design/search/ranking.h): its order and threshold by
 // hand, offer_cone against sorting every member of a cone on seeded random costs, and the
 // padded designs left out by default, by hand and against filtering every design sorted.
 
-#include "design/ranking.h"
+#include "design/search/ranking.h"
 
 #include <gtest/gtest.h>
 

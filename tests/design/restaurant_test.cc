@@ -3,9 +3,9 @@
 // objectives are worked out by hand in the comments; setting (c) is also checked against
 // evaluating all 64 configurations without any bound.
 
-#include "design/design_search.h"
-#include "design/local_evaluator.h"
-#include "design/relevance.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/evaluation/relevance.h"
+#include "design/search/design_search.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>

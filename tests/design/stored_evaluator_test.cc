@@ -1,10 +1,10 @@
 // The evaluation store: content keys, and a search answered from it.
 
-#include "design/stored_evaluator.h"
+#include "design/evaluation/stored_evaluator.h"
 #include "example_paths.h"
 
-#include "design/design_search.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/search/design_search.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>

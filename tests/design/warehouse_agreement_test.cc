@@ -3,8 +3,8 @@
 // probes and reuse of equally cheap plans all run (with the hitting-set phase off), and the
 // hitting-set phase proves the answer (on); the exhaustive search is the reference.
 
-#include "design/design_search.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/search/design_search.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>

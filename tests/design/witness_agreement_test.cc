@@ -33,10 +33,10 @@
 // in the failure (so is every directory with ENVDESIGN_AGREEMENT_KEEP=1); the others are
 // removed.
 
-#include "design/design_search.h"
-#include "design/explicability.h"
-#include "design/local_evaluator.h"
-#include "design/witness.h"
+#include "design/behaviour/explicability.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/search/design_search.h"
+#include "design/search/witness.h"
 #include "spec/design_spec.h"
 
 #include <gtest/gtest.h>

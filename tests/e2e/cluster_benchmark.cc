@@ -12,8 +12,8 @@
 #include "bus/auth.h"
 #include "bus/log.h"
 
-#include "design/design_search.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/local_evaluator.h"
+#include "design/search/design_search.h"
 #include "spec/design_spec.h"
 
 #include <envdesign/client/client.h>

@@ -1,9 +1,9 @@
-// Every number parser of issue 21's rule (design/numbers.h): the input is a number's text,
+// Every number parser of issue 21's rule (design/model/numbers.h): the input is a number's text,
 // its first byte picks where it enters (a spec field, or a flag). A spec that loads holds
 // only numbers in their ranges; a flag that passes its check is finite and in range; nothing
 // crashes (the solver aborted on beta 1e25).
 
-#include "design/numbers.h"
+#include "design/model/numbers.h"
 #include "envdesign/spec_t.hpp"
 #include "pddl/parse_error.h"
 #include "service/number_flag.h"

@@ -8,7 +8,7 @@
 
 #include "cluster/planner_pool.h"
 #include "cluster/spec_chunks.h"
-#include "design/numbers.h"
+#include "design/model/numbers.h"
 #include "service/config_file.h"
 #include "service/number_flag.h"
 #include "service_main.h"

@@ -1,9 +1,9 @@
-// Records read back from the coordinator's state file (design/evaluation_record.h): any bytes
-// either decode to values design/numbers.h accepts, which encode and decode again to the same
-// record, or are refused; never a crash, never NaN or 1e308 let through (issue 21).
+// Records read back from the coordinator's state file (design/evaluation/evaluation_record.h): any
+// bytes either decode to values design/model/numbers.h accepts, which encode and decode again to
+// the same record, or are refused; never a crash, never NaN or 1e308 let through (issue 21).
 
-#include "design/evaluation_record.h"
-#include "design/numbers.h"
+#include "design/evaluation/evaluation_record.h"
+#include "design/model/numbers.h"
 
 #include <cstdint>
 #include <cstdlib>

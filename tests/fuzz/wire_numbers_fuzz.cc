@@ -7,14 +7,14 @@
 //   design_request_t     cluster::request_problem (the coordinator)
 // Whatever passes must hold only finite numbers in their ranges (INF only where it means
 // "no plan"), written out here again, not by calling the checks; an evaluation that passes
-// must also be one the store takes back (design/evaluation_record.h). Never a crash.
+// must also be one the store takes back (design/evaluation/evaluation_record.h). Never a crash.
 
 #include "bus/codec.h"
 #include "cluster/coordinator.h"
 #include "cluster/planner_pool.h"
-#include "design/deadline.h"
-#include "design/evaluation_record.h"
-#include "design/numbers.h"
+#include "design/evaluation/evaluation_record.h"
+#include "design/model/numbers.h"
+#include "design/search/deadline.h"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"

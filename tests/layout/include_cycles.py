@@ -18,7 +18,7 @@ def unit(path):
     return os.path.splitext(path)[0]
 
 headers = {f for f in files if f.endswith('.h')}
-# "design/witness.h" is found as common/design/witness.h
+# "design/search/witness.h" is found as common/design/search/witness.h
 by_include = {}
 for h in headers:
     parts = h.split('/')

@@ -1,8 +1,8 @@
 // A spec received over the bus (spec_t) loads in memory as the same file does from disk; its
 // errors name the client's files; the planner's trusted load parses without the full check.
 
-#include "design/evaluate_design.h"
-#include "design/local_evaluator.h"
+#include "design/evaluation/evaluate_design.h"
+#include "design/evaluation/local_evaluator.h"
 #include "spec/design_spec.h"
 #include "spec/spec_bundle.h"
 #include "spec/spec_message.h"

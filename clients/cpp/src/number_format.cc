@@ -1,5 +1,7 @@
 #include "result_format.h"
 
+#include "design/objective/formula.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -40,9 +42,10 @@ double objective_with(const envdesign::explanation_t &w, const envdesign::design
         return NAN;
     if (std::isinf(point.expected_ie))
         return INFINITY;
-    double discounted = w.gamma >= 1 ? horizon : (1 - std::pow(w.gamma, horizon)) / (1 - w.gamma);
-    return alpha * point.expected_ie * discounted + w.beta * point.design_cost +
-           w.kappa * horizon * point.expected_robot_cost;
+    namespace formula = design::formula; // the searches' own arithmetic
+    return formula::weighted_sum(alpha, w.beta, w.kappa,
+                                 point.expected_ie * formula::discounted_horizon(w.gamma, horizon),
+                                 point.design_cost, horizon * point.expected_robot_cost, 0);
 }
 
 std::string plan_name(const std::string &robot_behaviour) {

@@ -7,7 +7,7 @@ namespace {
 using nlohmann::json;
 
 // robot_behaviour EXPLAINING: the tasks carry their explaining option, and the objective has
-// a fourth term, the explanations told over the horizon (weight 1; design/explaining.h).
+// a fourth term, the explanations told over the horizon (weight 1; design/behaviour/explaining.h).
 bool explaining(const envdesign::design_result_t &r) {
     for (const auto &t : r.tasks)
         if (t.has_explanation)

@@ -26,7 +26,7 @@ void weighted_line(std::ostream &out, const char *label, const Terms &t, const W
         << shown(w.beta * t.design_cost) << " design cost (" << shown(w.beta) << " x "
         << shown(t.design_cost) << ") + " << shown(w.kappa * t.robot_cost) << " robot cost ("
         << shown(w.kappa) << " x " << shown(t.robot_cost) << ")";
-    if (t.explanation != 0) // EXPLAINING: its weight is 1 (design/explaining.h)
+    if (t.explanation != 0) // EXPLAINING: its weight is 1 (design/behaviour/explaining.h)
         out << " + " << shown(t.explanation) << " explanation";
     out << "\n";
 }

@@ -1,0 +1,73 @@
+#include "design/behaviour/explicability.h"
+
+#include "design/model/compilation.h"
+#include "design/model/lifted_key.h"
+#include "ground/grounder.h"
+
+#include <cmath>
+
+namespace envdesign::design {
+namespace {
+
+double as_cost(long long cost) { return static_cast<double>(cost); }
+
+// Sets c_H* and the human's optimal plan; false if the deadline passed first.
+bool solve_human(const ModelPair &models, PlanCache &planner, const Deadline &deadline,
+                 TaskExplicability &result) {
+    PlanOutcome human = solve_model(models.human_domain, models.human_problem, planner, deadline);
+    if (human.status == PlanStatus::SOLVED) {
+        result.human_optimal_cost = as_cost(human.cost);
+        result.human_plan = std::move(human.plan);
+    } else if (human.status == PlanStatus::UNSOLVABLE) {
+        result.human_optimal_cost = INF;
+    }
+    return human.status != PlanStatus::LIMIT;
+}
+
+} // namespace
+
+PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
+                        PlanCache &planner, const Deadline &deadline) {
+    return planner.solve_model(
+        lifted_key(domain, problem),
+        [&] {
+            return ground::ground(domain, problem, nullptr, [&] { return deadline.expired(); });
+        },
+        deadline);
+}
+
+double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance) {
+    if (std::isinf(human_plan_cost) || std::isinf(human_optimal_cost))
+        return INF;
+    double difference = std::abs(human_plan_cost - human_optimal_cost);
+    return distance == Distance::COST_DIFF ? difference : std::exp(difference);
+}
+
+TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
+                                         PlanCache &planner, const Deadline &deadline,
+                                         bool solve_human_anyway) {
+    TaskExplicability result;
+    CompiledTask compiled = compile_explicable(models);
+    PlanOutcome explicable = solve_model(compiled.domain, compiled.problem, planner, deadline);
+    if (explicable.status == PlanStatus::LIMIT)
+        return result;
+    if (explicable.status == PlanStatus::UNSOLVABLE) {
+        result.status = ExplicabilityStatus::INEXPLICABLE;
+        if (solve_human_anyway)
+            solve_human(models, planner, deadline, result);
+        return result;
+    }
+    if (!solve_human(models, planner, deadline, result))
+        return TaskExplicability{};
+    result.human_plan_cost = as_cost(explicable.cost);
+    result.robot_cost = as_cost(explicable.secondary_cost);
+    result.plan = std::move(explicable.plan);
+    result.ie = inexplicability(result.human_plan_cost, *result.human_optimal_cost, distance);
+    // P_H has no plan although P_mod has one only if the models contradict the compilation.
+    // (exp of a large cost gap overflows to inf; that is a huge IE, not a missing plan.)
+    bool planless = std::isinf(result.human_plan_cost) || std::isinf(*result.human_optimal_cost);
+    result.status = planless ? ExplicabilityStatus::INEXPLICABLE : ExplicabilityStatus::SOLVED;
+    return result;
+}
+
+} // namespace envdesign::design

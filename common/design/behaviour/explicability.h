@@ -1,0 +1,36 @@
+#pragma once
+// The explicability of one task under one configuration (SPEC.md, "The model"):
+//   pi   = an optimal plan of P_mod (compilation.h): a most explicable plan, and among
+//          those the cheapest for the robot;
+//   c_H* = the optimal cost of P_H;
+//   IE   = exp(|c_H(pi) - c_H*|) (EXP_COST_DIFF) or |c_H(pi) - c_H*| (COST_DIFF);
+//          infinite when P_mod has no plan (then P_H is not solved: IE is known).
+//
+// Example:
+//   PlanCache planner(planning::PlannerOptions{});
+//   TaskExplicability e = evaluate_explicability(models, Distance::EXP_COST_DIFF, planner, {});
+
+#include "design/design_problem.h"
+#include "design/evaluation/plan_cache.h"
+#include "design/evaluation/task_evaluation.h"
+#include "design/model/configuration.h"
+#include "design/search/deadline.h"
+
+namespace envdesign::design {
+
+// The planner's answer for one lifted model: skips grounding when the model was seen
+// (PlanCache::solve_model with lifted_key.h).
+PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
+                        PlanCache &planner, const Deadline &deadline);
+
+// IE from the two human costs.
+double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance);
+
+// Compiles and grounds P_mod and P_H of `models` and plans both through `planner`.
+// `solve_human_anyway`: also solve P_H when P_mod has no plan (for reporting c_H*).
+// Throws pddl::ParseError if the models cannot be compiled or grounded.
+TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
+                                         PlanCache &planner, const Deadline &deadline,
+                                         bool solve_human_anyway = false);
+
+} // namespace envdesign::design

@@ -1,0 +1,73 @@
+#pragma once
+// Which piece of work to do next for a batch of configurations, and what is known so far;
+// the bookkeeping half of an Evaluator, free of any transport. LocalEvaluator runs the jobs
+// on threads; an evaluator over LCM (issue 5) sends the same jobs to planner services.
+//
+// Per configuration, the dispatcher first asks for the robot's optimal cost of every task
+// (ROBOT_BOUND jobs: cheap, and usually cache hits, since most modifications leave the robot
+// alone), then asks `abandon` whether the configuration can still win, and only then for
+// the explicability of each task (EXPLICABILITY jobs: the compiled task and the human's
+// task), asking `abandon` again after each answer. Configurations are served in batch order;
+// while one waits for answers, the next one's jobs go out.
+
+#include "design/evaluation/evaluator.h"
+
+#include <optional>
+#include <vector>
+
+namespace envdesign::design {
+
+enum class JobKind { ROBOT_BOUND, EXPLICABILITY };
+
+struct Job {
+    int configuration = 0; // index into the batch
+    int task = 0;
+    JobKind kind = JobKind::EXPLICABILITY;
+};
+
+struct JobAnswer {
+    Job job;
+    std::optional<double> robot_bound; // ROBOT_BOUND: c_R* (INF: no plan), unset: no bound
+    TaskExplicability explicability;   // EXPLICABILITY
+};
+
+class Dispatcher {
+public:
+    // `robot_bounds`: whether to ask for ROBOT_BOUND jobs at all (worth it only when the
+    // robot's cost is weighted). `callbacks` must outlive the dispatcher.
+    Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks, bool robot_bounds,
+               const EvaluationCallbacks &callbacks);
+
+    // The next job to send, or nullopt when nothing can be sent before more answers come.
+    std::optional<Job> next_job();
+    void receive(JobAnswer answer);
+    // Everything not finished ran out of time: reported LIMIT once its jobs are back.
+    void finish_rest();
+
+private:
+    struct Progress {
+        std::vector<int> bounds_needed; // tasks whose robot bound is asked for
+        std::vector<int> tasks_needed;  // tasks to evaluate
+        int bounds_sent = 0;            // of bounds_needed
+        int bounds_known = 0;
+        int tasks_sent = 0; // of tasks_needed
+        int in_flight = 0;
+        std::optional<EvaluationStatus> stopped;
+        bool finished = false;
+    };
+
+    std::optional<Job> next_job_of(int c);
+    static int needed(const Progress &p);
+    bool complete(int c) const;
+    void stop(int c, EvaluationStatus status);
+    void finish_if_idle(int c);
+    bool abandon(int c);
+
+    const EvaluationCallbacks &callbacks_;
+    bool robot_bounds_;
+    std::vector<ConfigurationEvaluation> state_;
+    std::vector<Progress> progress_;
+    int first_open_ = 0; // configurations before this one need nothing more
+};
+
+} // namespace envdesign::design

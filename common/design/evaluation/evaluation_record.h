@@ -1,0 +1,36 @@
+#pragma once
+// Task evaluations and robot-cost bounds as durable records (store/record_db.h): their
+// names and their bytes. A record's name is the SHA-256 of a text that holds the format
+// version, the kind of record, the store's key (models, modifications, distance,
+// heuristic: evaluation_store.h), the configuration and the task's key; its value starts
+// with the same version. Bumping RECORD_VERSION makes every old record unreachable.
+
+#include "design/evaluation/task_evaluation.h"
+#include "design/model/configuration.h"
+#include "design/model/ground_key.h"
+#include "store/digest.h"
+
+#include <optional>
+#include <string>
+
+namespace envdesign::design {
+
+// 2: evaluations carry the EXPLAINING option (TaskExplanation).
+inline constexpr int RECORD_VERSION = 2;
+
+enum class RecordKind { EXPLICABILITY, ROBOT_BOUND };
+
+store::Digest record_name(RecordKind kind, const TaskKey &scope, const Configuration &configuration,
+                          const TaskKey &task);
+
+// SOLVED and INEXPLICABLE evaluations (LIMIT is never stored).
+std::string encode_evaluation(const TaskExplicability &evaluation);
+std::optional<TaskExplicability> decode_evaluation(const std::string &bytes); // nullopt: bad
+
+std::string encode_robot_bound(double bound);
+std::optional<double> decode_robot_bound(const std::string &bytes);
+
+// The first 128 bits of SHA-256(text): the keys of evaluation_store.h.
+TaskKey digest_key(const std::string &text);
+
+} // namespace envdesign::design

@@ -1,0 +1,168 @@
+#include "design/evaluation/local_evaluator.h"
+
+#include "design/behaviour/cost_optimal.h"
+#include "design/behaviour/explaining.h"
+#include "design/behaviour/explicability.h"
+#include "design/evaluation/dispatcher.h"
+
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+namespace envdesign::design {
+
+Evaluator::~Evaluator() = default;
+
+ConfigurationEvaluation unevaluated(Configuration configuration) {
+    return {std::move(configuration), EvaluationStatus::LIMIT, {}, {}};
+}
+
+namespace {
+
+struct Answer {
+    JobAnswer answer;
+    std::exception_ptr error;
+};
+
+// Jobs go to the workers, answers come back to the dispatcher.
+class Channel {
+public:
+    void send(Job job) {
+        {
+            std::lock_guard lock(mutex_);
+            jobs_.push_back(job);
+        }
+        job_ready_.notify_one();
+    }
+    // Blocks until a job arrives; nullopt once closed.
+    std::optional<Job> receive_job() {
+        std::unique_lock lock(mutex_);
+        job_ready_.wait(lock, [&] { return closed_ || !jobs_.empty(); });
+        if (jobs_.empty())
+            return std::nullopt;
+        Job job = jobs_.front();
+        jobs_.pop_front();
+        return job;
+    }
+    void answer(Answer a) {
+        {
+            std::lock_guard lock(mutex_);
+            answers_.push_back(std::move(a));
+        }
+        answer_ready_.notify_one();
+    }
+    Answer receive_answer() {
+        std::unique_lock lock(mutex_);
+        answer_ready_.wait(lock, [&] { return !answers_.empty(); });
+        Answer a = std::move(answers_.front());
+        answers_.pop_front();
+        return a;
+    }
+    void close() {
+        {
+            std::lock_guard lock(mutex_);
+            closed_ = true;
+        }
+        job_ready_.notify_all();
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable job_ready_, answer_ready_;
+    std::deque<Job> jobs_;
+    std::deque<Answer> answers_;
+    bool closed_ = false;
+};
+
+} // namespace
+
+LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
+                               planning::PlannerOptions options)
+    : problem_(problem), workers_(std::max(1, workers)), cache_(std::move(options)),
+      robot_bounds_(problem.weights.kappa > 0) {}
+
+TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
+                                                const Deadline &deadline) {
+    ModelPair models = configured_models(problem_, configuration, task);
+    if (is_cost_optimal(problem_.weights.behaviour))
+        return evaluate_cost_optimal(models, problem_.weights, cache_, deadline);
+    return evaluate_task_behaviour(models, problem_.weights, cache_, deadline);
+}
+
+std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration, int task,
+                                                       const Deadline &deadline) {
+    ModelPair models = configured_models(problem_, configuration, task);
+    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, cache_, deadline);
+    if (robot.status == PlanStatus::SOLVED)
+        return static_cast<double>(robot.cost);
+    if (robot.status == PlanStatus::UNSOLVABLE)
+        return INF;
+    return std::nullopt;
+}
+
+JobAnswer LocalEvaluator::run(const Configuration &configuration, const Job &job,
+                              const Deadline &deadline) {
+    JobAnswer answer{job, std::nullopt, {}};
+    if (job.kind == JobKind::ROBOT_BOUND)
+        answer.robot_bound = robot_cost_bound(configuration, job.task, deadline);
+    else
+        answer.explicability = evaluate_task(configuration, job.task, deadline);
+    return answer;
+}
+
+void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
+                              const Deadline &deadline, const EvaluationCallbacks &callbacks) {
+    Dispatcher dispatcher(batch, static_cast<int>(problem_.tasks.size()), robot_bounds_, callbacks);
+    Channel channel;
+    std::vector<std::thread> threads;
+    for (int i = 0; i < workers_; ++i) {
+        threads.emplace_back([&] {
+            while (auto job = channel.receive_job()) {
+                Answer a{{*job, std::nullopt, {}}, nullptr};
+                try {
+                    a.answer = run(batch[job->configuration].configuration, *job, deadline);
+                } catch (...) {
+                    a.error = std::current_exception();
+                }
+                channel.answer(std::move(a));
+            }
+        });
+    }
+    std::exception_ptr error;
+    int in_flight = 0;
+    while (true) {
+        while (in_flight < workers_ && !error && !deadline.expired()) {
+            auto job = dispatcher.next_job();
+            if (!job)
+                break;
+            channel.send(*job);
+            ++in_flight;
+        }
+        if (in_flight == 0)
+            break;
+        Answer a = channel.receive_answer();
+        --in_flight;
+        if (a.answer.job.kind == JobKind::EXPLICABILITY)
+            ++task_evaluations_;
+        if (a.error && !error)
+            error = a.error;
+        if (!a.error)
+            dispatcher.receive(std::move(a.answer));
+    }
+    channel.close();
+    for (auto &t : threads)
+        t.join();
+    if (error)
+        std::rethrow_exception(error);
+    dispatcher.finish_rest();
+}
+
+EvaluatorCounters LocalEvaluator::counters() const {
+    CacheCounters c = cache_.counters();
+    return {task_evaluations_, c.planner_runs, c.cache_hits, c.groundings_skipped,
+            c.planner_seconds};
+}
+
+} // namespace envdesign::design

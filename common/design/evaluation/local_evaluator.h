@@ -1,0 +1,42 @@
+#pragma once
+// The in-process Evaluator: `workers` threads run the jobs of a Dispatcher (dispatcher.h),
+// sharing one PlanCache, while the calling thread hands out jobs (at most one per worker in
+// flight, so that `abandon` sees the latest answers) and collects the answers. Robot-cost
+// bounds are asked for only when the objective weighs the robot's cost (kappa > 0).
+
+#include "design/design_problem.h"
+#include "design/evaluation/dispatcher.h"
+#include "design/evaluation/evaluator.h"
+#include "design/evaluation/plan_cache.h"
+
+namespace envdesign::design {
+
+class LocalEvaluator : public Evaluator {
+public:
+    // `problem` must outlive the evaluator.
+    LocalEvaluator(const DesignProblem &problem, int workers,
+                   planning::PlannerOptions options = {});
+
+    void evaluate(const std::vector<ConfigurationEvaluation> &batch, const Deadline &deadline,
+                  const EvaluationCallbacks &callbacks) override;
+    EvaluatorCounters counters() const override;
+
+    // The evaluation of one pair, as a worker does it (also used for --prune relevant).
+    TaskExplicability evaluate_task(const Configuration &configuration, int task,
+                                    const Deadline &deadline);
+    // The robot's optimal cost under `configuration` (INF: no plan; unset: out of time).
+    std::optional<double> robot_cost_bound(const Configuration &configuration, int task,
+                                           const Deadline &deadline);
+    PlanCache &planner() { return cache_; }
+
+private:
+    JobAnswer run(const Configuration &configuration, const Job &job, const Deadline &deadline);
+
+    const DesignProblem &problem_;
+    int workers_;
+    PlanCache cache_;
+    bool robot_bounds_;
+    long long task_evaluations_ = 0;
+};
+
+} // namespace envdesign::design
