@@ -21,6 +21,8 @@ namespace {
 using envdesign::design_progress_t;
 using envdesign::design_request_t;
 
+constexpr std::size_t COORDINATOR_PLAN_BYTES = std::size_t{256} << 20; // per search
+
 } // namespace
 
 RequestRun::RequestRun(RunContext context, design_request_t request)
@@ -105,7 +107,10 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     }
     planning::PlannerOptions planner;
     planner.heuristic = wire::heuristic_kind(request_.heuristic);
-    design::PlanCache local_planner(planner); // --prune relevant, the explanation's plans
+    // The coordinator's own planning (--prune relevant, the explanation's plans, why a task
+    // is unsolvable) is bounded as a planner's job is: a spec cannot grow the coordinator.
+    planner.limits.memory_limit_bytes = COORDINATOR_PLAN_BYTES;
+    design::PlanCache local_planner(planner);
     auto on_progress = [&](const design::SearchProgress &p) {
         std::lock_guard lock(mutex_);
         progress_.done = p.done;
