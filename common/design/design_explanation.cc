@@ -72,7 +72,7 @@ DesignExplanation explain_design(const DesignProblem &problem, const DesignResul
     DesignExplanation out;
     out.weights = problem.weights;
     out.discounted_horizon = discounted_horizon(problem.weights);
-    out.least_ie = problem.weights.distance == Distance::COST_DIFF ? 0.0 : 1.0;
+    out.least_ie = least_ie(problem.weights.distance);
     out.least_inexplicability = out.least_ie * out.discounted_horizon;
     out.chosen = design_point(problem, chosen, best.tasks);
     log.keep(out.chosen);

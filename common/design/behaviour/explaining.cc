@@ -9,8 +9,6 @@
 namespace envdesign::design {
 namespace {
 
-double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
-
 // The explanation when the most explicable plan is itself optimal for both models: pi is
 // then an optimal plan of P_R that needs no explanation (E = {}), so no search is needed.
 std::optional<TaskExplanation> nothing_to_tell(const TaskExplicability &t, double robot_optimal,

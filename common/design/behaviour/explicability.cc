@@ -36,6 +36,8 @@ PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem
         deadline);
 }
 
+double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
+
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance) {
     if (std::isinf(human_plan_cost) || std::isinf(human_optimal_cost))
         return INF;

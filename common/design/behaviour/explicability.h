@@ -26,6 +26,10 @@ PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem
 // IE from the two human costs.
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance);
 
+// The least IE `distance` allows (a plan observers expect): 1 for EXP_COST_DIFF, 0 for
+// COST_DIFF. The one definition the objective, the bounds and the explanation use.
+double least_ie(Distance distance);
+
 // Compiles and grounds P_mod and P_H of `models` and plans both through `planner`.
 // `solve_human_anyway`: also solve P_H when P_mod has no plan (for reporting c_H*).
 // Throws pddl::ParseError if the models cannot be compiled or grounded.

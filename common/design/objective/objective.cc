@@ -8,8 +8,6 @@
 namespace envdesign::design {
 namespace {
 
-double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
-
 // alpha * H * ie + extra + kappa * T * cost, infinite (not NaN) when any part is.
 double contribution(const ObjectiveWeights &w, double ie, double extra, double cost) {
     if (std::isinf(ie) || std::isinf(cost))

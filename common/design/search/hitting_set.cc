@@ -14,8 +14,6 @@
 namespace envdesign::design::witness {
 namespace {
 
-double least_ie(const ObjectiveWeights &w) { return w.distance == Distance::COST_DIFF ? 0.0 : 1.0; }
-
 // Beyond this magnitude a coefficient, bound or cutoff is not given to CBC (it aborts near
 // 1e25, and its absolute tolerances lose meaning long before): the phase gives up instead,
 // and the search proves the optimum without it (numbers.h keeps every input far below).
@@ -148,7 +146,7 @@ double HittingSetMaster::level_value(int task, double floor, double human_optimu
     double gap = floor - human_optimum;
     if (gap <= 0)
         return 0;
-    double least = least_ie(w);
+    double least = least_ie(w.distance);
     return weight * ((least == 0 ? gap : std::exp(gap)) - least);
 }
 

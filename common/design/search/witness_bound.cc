@@ -172,7 +172,7 @@ double SupersetBound::breaking_extra(const Node &node) const {
         for (const PooledPlan *plan : s.plans[t])
             for (int m : plan->breakers)
                 s.share[t * n + m] = weighted_cost(m) / s.degree[m];
-    double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
+    const double least = least_ie(w.distance);
     double best_extra = 0;
     for (int round = 0; round < 4; ++round) {
         double extra = 0;
@@ -181,9 +181,9 @@ double SupersetBound::breaking_extra(const Node &node) const {
             if (s.plans[t].empty())
                 continue;
             double weight = w.alpha * horizon_ * problem_.tasks[t].probability;
-            extra += level_bound(s.plans[t], &s.share[t * n], floor(node, t), weight, least_ie,
+            extra += level_bound(s.plans[t], &s.share[t * n], floor(node, t), weight, least,
                                  s.used[t]) -
-                     weight * least_ie; // the least value is counted already
+                     weight * least; // the least value is counted already
             for (int m : s.used[t])
                 ++s.users[m];
         }
@@ -311,14 +311,14 @@ double SupersetBound::with_open_shares(const Node &node, const OpenTasks &open,
     const Configuration &c = node.configuration;
     const ObjectiveWeights &w = problem_.weights;
     double horizon = discounted_horizon(w);
-    double least_ie = w.distance == Distance::COST_DIFF ? 0.0 : 1.0;
+    const double least = least_ie(w.distance);
     for (int t = 0; t < tasks_; ++t) {
         if (!open.shares[t])
             continue;
         const TaskExplicability &e = node.tasks[t]->evaluation;
         double p = problem_.tasks[t].probability;
         double robot_least = open.robot_bounds[t].value_or(0.0);
-        double excess = w.alpha * horizon * p * (e.ie - least_ie) +
+        double excess = w.alpha * horizon * p * (e.ie - least) +
                         w.kappa * w.horizon * p * (e.robot_cost - robot_least);
         double share = INF;
         auto consider = [&](int m) { share = std::min(share, weighted_cost(m) / open.degree[m]); };
