@@ -3,6 +3,8 @@
 
 #include "harness.h"
 
+#include <cmath>
+
 namespace envdesign::testing {
 namespace {
 
@@ -30,7 +32,13 @@ TEST(ArrivalsToBridge, CountsAndEstimate) {
     EXPECT_DOUBLE_EQ(m.samples, 100);
     EXPECT_NEAR(probability(m, "serve-g1"), 0.9, 1e-12);
     EXPECT_NEAR(probability(m, "serve-g2"), 0.1, 1e-12);
-    EXPECT_NEAR(m.distance, 0, 1e-12); // the spec's D is 0.9 / 0.1
+    // The distance is from the D of the design in force: the spec's 0.9 / 0.1, or a mix the
+    // bridge re-weighed its design for while the arrivals came (timing decides which; a
+    // test that assumed the spec's failed now and then: 1/85, the mix after 85 arrivals).
+    double tv = 0;
+    for (int i = 0; i < m.num_tasks; ++i)
+        tv += std::abs(m.probabilities[i] - m.reference[i]) / 2;
+    EXPECT_NEAR(m.distance, tv, 1e-12);
     EXPECT_EQ(m.sequence_gaps, 0);
     ASSERT_TRUE(lcm.wait_until([&] { return !lcm.results().empty(); }, 10s));
     auto result = lcm.results().front().message;
