@@ -80,13 +80,7 @@ envdesign::task_result_t task_message(const design::DesignProblem &problem, int 
     envdesign::task_result_t m;
     m.name = task.name;
     m.probability = task.probability;
-    m.ie = t.ie;
-    m.robot_cost = t.robot_cost;
-    m.human_plan_cost = t.human_plan_cost;
-    m.has_human_optimal_cost = t.human_optimal_cost.has_value();
-    m.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
-    m.plan = t.plan;
-    m.plan_length = length(m.plan.size());
+    put_costs_and_plan(t, m);
     put_option(problem.weights, t, m); // EXPLAINING: the option the robot takes
     return m;
 }

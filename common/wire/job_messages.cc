@@ -13,18 +13,6 @@ namespace {
 
 using envdesign::evaluation_t;
 
-// The fields task_result_t and evaluation_t share.
-template <typename Message>
-void put_costs_and_plan(const design::TaskExplicability &t, Message &m) {
-    m.ie = t.ie;
-    m.robot_cost = t.robot_cost;
-    m.human_plan_cost = t.human_plan_cost;
-    m.has_human_optimal_cost = t.human_optimal_cost.has_value();
-    m.human_optimal_cost = t.human_optimal_cost.value_or(design::INF);
-    m.plan = t.plan;
-    m.plan_length = static_cast<std::int16_t>(m.plan.size());
-}
-
 } // namespace
 
 heuristics::HeuristicKind heuristic_kind(std::int8_t heuristic) {

@@ -144,27 +144,27 @@ TEST_F(SpecNumbers, TheTopOfTheRangesGivesTheExhaustiveDesign) {
     EXPECT_DOUBLE_EQ(witness["objective"].get<double>(), exhaustive["objective"].get<double>());
 }
 
-TEST(NumberFlags, NanAndInfiniteTimeLimitsAreUsageErrors) {
+// `envdesign design` of the restaurant with `flag` at each of `bad` exits 2 naming the flag,
+// and at `top` (the top of its range) designs.
+void expect_design_flag_range(const std::string &flag, std::vector<std::string> bad,
+                              const std::string &top) {
     std::string spec = RESTAURANT + "/c-two-tasks-t10.textproto";
-    for (const char *value : {"nan", "inf", "1e10", "-1"}) {
-        CommandResult r = run_envdesign("design " + spec + " --time-limit " + value);
+    for (const auto &value : bad) {
+        CommandResult r = run_envdesign("design " + spec + " " + flag + " " + value);
         EXPECT_EQ(r.exit_code, 2) << value << "\n" << r.out;
-        EXPECT_NE(r.out.find("--time-limit"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find(flag), std::string::npos) << r.out;
     }
-    CommandResult ok = run_envdesign("design " + spec + " --time-limit 1e6");
+    CommandResult ok = run_envdesign("design " + spec + " " + flag + " " + top);
     EXPECT_EQ(ok.exit_code, 0) << ok.out;
+}
+
+TEST(NumberFlags, NanAndInfiniteTimeLimitsAreUsageErrors) {
+    expect_design_flag_range("--time-limit", {"nan", "inf", "1e10", "-1"}, "1e6");
 }
 
 // --max-design-size above DESIGN_SIZE (1e5) was taken here and refused only by a coordinator.
 TEST(NumberFlags, MaxDesignSizeAboveItsRangeIsAUsageError) {
-    std::string spec = RESTAURANT + "/c-two-tasks-t10.textproto";
-    for (const char *value : {"100001", "2147483647", "-1", "nan"}) {
-        CommandResult r = run_envdesign("design " + spec + " --max-design-size " + value);
-        EXPECT_EQ(r.exit_code, 2) << value << "\n" << r.out;
-        EXPECT_NE(r.out.find("--max-design-size"), std::string::npos) << r.out;
-    }
-    CommandResult ok = run_envdesign("design " + spec + " --max-design-size 100000");
-    EXPECT_EQ(ok.exit_code, 0) << ok.out;
+    expect_design_flag_range("--max-design-size", {"100001", "2147483647", "-1", "nan"}, "100000");
 }
 
 // A command line of `binary` (in the build's bin folder), all output kept.
