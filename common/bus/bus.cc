@@ -77,25 +77,30 @@ Subscription Bus::subscribe_raw(const std::string &channel, RawHandler handler,
                                 int queue_capacity) {
     auto slot = std::make_unique<Subscription::Slot>(
         Subscription::Slot{this, std::move(handler), ReplayGuard()});
+    auto port = guarded_ ? std::nullopt : udpm_port(url_);
+    std::size_t sockets_before = port ? udpm_receive_sockets(*port).size() : 0;
     lcm::Subscription *raw =
         lcm_.subscribeFunction(channel, &Bus::trampoline, static_cast<void *>(slot.get()));
     if (!raw)
         throw BusError("cannot subscribe to " + channel);
+    // Before anything touches `raw`: when LCM could not bind, it holds no C subscription (a
+    // null one, on which setQueueCapacity crashes) and stays inert in LCM's list.
+    if (port)
+        guard_receive_socket(*port, sockets_before);
     raw->setQueueCapacity(queue_capacity);
-    guard_receive_socket();
     return Subscription(this, raw, std::move(slot));
 }
 
 // LCM opens its udpm receive socket at the first subscription; the guard goes on it then.
-void Bus::guard_receive_socket() {
-    if (guarded_)
-        return;
+// No new socket means LCM could not bind the port (it prints "bind: Address already in use"
+// and goes on deaf): another program holds it without sharing. That is this bus's error,
+// said where it starts, not a service that silently never hears a message.
+void Bus::guard_receive_socket(std::uint16_t port, std::size_t sockets_before) {
+    if (udpm_receive_sockets(port).size() <= sockets_before)
+        throw BusError("LCM cannot receive on UDP port " + std::to_string(port) + " of '" + url_ +
+                       "': another program holds the port without sharing it");
+    guard_udpm_fragments(port);
     guarded_ = true;
-    auto port = udpm_port(url_);
-    if (port && guard_udpm_fragments(*port) == 0)
-        logger_->warn("request - | no LCM receive socket found on port {}: forged fragments "
-                      "can reach LCM's reassembly unchecked",
-                      *port);
 }
 
 void Bus::trampoline(const lcm::ReceiveBuffer *buffer, const std::string &channel, void *context) {

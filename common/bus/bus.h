@@ -110,6 +110,8 @@ public:
     // This bus's process id: the signed sender with keys, the declared origin without.
     std::uint64_t origin() const { return origin_; }
 
+    // Throws BusError when LCM cannot receive: its udpm port is held by a socket that does not
+    // share it (LCM opens its receive socket at the first subscription).
     template <typename Message>
     Subscription subscribe(const std::string &channel, std::function<void(const Message &)> handler,
                            int queue_capacity = DEFAULT_QUEUE) {
@@ -158,7 +160,7 @@ private:
     void send(const std::string &channel, const void *data, int size, bool declare_origin);
     void unsubscribe(lcm::Subscription *raw);
     void count_drop(const std::string &channel, Drop reason);
-    void guard_receive_socket();
+    void guard_receive_socket(std::uint16_t port, std::size_t sockets_before);
 
     std::string url_;
     std::shared_ptr<spdlog::logger> logger_;

@@ -7,6 +7,7 @@
 #include "bus/log.h"
 #include "envdesign/cancel_t.hpp"
 
+#include "../support/ports.h"
 #include "bus_test_support.h"
 
 #include <gtest/gtest.h>
@@ -139,7 +140,8 @@ TEST(Auth, TheReplayTableIsBoundedAndForgetsNoReplay) {
 }
 
 std::string udp_url() {
-    return "udpm://239.255.76.67:" + std::to_string(20000 + getpid() % 20000) + "?ttl=0";
+    static const std::string url = testing::udpm_test_url(testing::claim_udp_port());
+    return url;
 }
 
 void pump(Bus &a, Bus &b) {

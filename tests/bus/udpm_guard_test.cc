@@ -8,6 +8,8 @@
 
 #include "bus_test_support.h"
 
+#include "../support/ports.h"
+
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
@@ -21,8 +23,8 @@
 namespace envdesign::bus {
 namespace {
 
-const std::uint16_t PORT = static_cast<std::uint16_t>(60000 + getpid() % 5000);
-const std::string URL = "udpm://239.255.76.67:" + std::to_string(PORT) + "?ttl=0";
+const std::uint16_t PORT = static_cast<std::uint16_t>(testing::claim_udp_port());
+const std::string URL = testing::udpm_test_url(PORT);
 const std::string CHANNEL = "GUARD_TEST";
 
 // Raw LC03 datagrams to the test's group, from one socket (LCM keys reassembly by sender).
@@ -127,11 +129,33 @@ TEST(UdpmGuard, ABusDropsTheWrappingFragmentAndTakesGenuineOnes) {
     EXPECT_EQ(heard, std::vector<std::string>{message});
 }
 
+// A port another program holds without SO_REUSEADDR: LCM prints "bind: Address already in
+// use" and would go on deaf (a test once crashed that way when two tests met on one port).
+// The subscription throws instead, naming the port, and the bus stays usable for nothing else.
+TEST(UdpmGuard, APortHeldWithoutSharingIsAnErrorAtSubscription) {
+    int port = testing::claim_udp_port();
+    int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in any{};
+    any.sin_family = AF_INET;
+    any.sin_port = htons(static_cast<std::uint16_t>(port));
+    any.sin_addr.s_addr = htonl(INADDR_ANY);
+    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr *>(&any), sizeof any), 0);
+    Bus bus(testing::udpm_test_url(port), quiet());
+    try {
+        auto sub = bus.subscribe_raw(CHANNEL, [](const void *, int) {});
+        ADD_FAILURE() << "subscribed on a port another socket holds";
+    } catch (const BusError &e) {
+        EXPECT_NE(std::string(e.what()).find("UDP port " + std::to_string(port)), std::string::npos)
+            << e.what();
+    }
+    ::close(fd);
+}
+
 // Issue 21: fragments of a 250 MB message (unsigned) made LCM allocate and reassemble it
 // before any check of ours. The filter on a UDP socket of the port: a fragment of a message
 // beyond BUS_MAX_MESSAGE never arrives, one of a message within it does.
 TEST(UdpmGuard, FragmentsOfAMessageBeyondTheBusLimitAreDropped) {
-    std::uint16_t port = static_cast<std::uint16_t>(PORT + 1);
+    std::uint16_t port = static_cast<std::uint16_t>(testing::claim_udp_port());
     int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
     sockaddr_in any{};
     any.sin_family = AF_INET;

@@ -5,6 +5,7 @@
 
 #include "run_command.h"
 
+#include "../support/ports.h"
 #include "../support/process.h"
 
 #include <envdesign/version.h>
@@ -79,9 +80,8 @@ TEST(JsonErrors, UsageErrorsAndMissingFilesToo) {
 }
 
 TEST(JsonErrors, NoCoordinatorIsExitOneWithAnObject) {
-    std::string port = std::to_string(60000 + getpid() % 2000); // no cluster test uses these
-    json error = stdout_json(
-        "status --json --seconds 0.2 --connect 'udpm://239.255.76.67:" + port + "?ttl=0'", 1);
+    std::string url = testing::udpm_test_url(testing::claim_udp_port()); // no coordinator there
+    json error = stdout_json("status --json --seconds 0.2 --connect '" + url + "'", 1);
     EXPECT_EQ(error["status"], "error");
     EXPECT_EQ(error["exit_code"], 1);
     EXPECT_NE(error["error"].get<std::string>().find("no coordinator on this bus"),

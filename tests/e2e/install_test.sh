@@ -8,7 +8,7 @@ set -euo pipefail
 build=$(cd "$1" && pwd)
 root=$(cd "$(dirname "$0")/../.." && pwd)
 prefix=$(mktemp -d)
-url="udpm://239.255.76.67:$((20000 + ($$ % 10000) * 2))?ttl=0"
+url="udpm://239.255.76.67:$(python3 "$root/tests/support/test_ports.py" --held-by $$)?ttl=0"
 trap 'ENVDESIGN_BIN=$prefix/bin bash "$root/deploy/cluster.sh" stop --dir "$prefix/cluster" >/dev/null 2>&1 || true; rm -rf "$prefix"' EXIT
 
 cmake --install "$build" --prefix "$prefix" >"$prefix/install.log"

@@ -12,9 +12,10 @@ set -euo pipefail
 
 build=$(cd "$1" && pwd)
 root=$(cd "$(dirname "$0")/../.." && pwd)
-port=$((20000 + ($$ % 10000) * 2))
+port=$(python3 "$root/tests/support/test_ports.py" --held-by $$)
+replay_port=$(python3 "$root/tests/support/test_ports.py" --held-by $$)
 url="udpm://239.255.76.67:$port?ttl=0&recv_buf_size=4194304"
-replay_url="udpm://239.255.76.67:$((port + 1))?ttl=0&recv_buf_size=4194304"
+replay_url="udpm://239.255.76.67:$replay_port?ttl=0&recv_buf_size=4194304"
 work=$(mktemp -d)
 pids=()
 cleanup() {

@@ -7,6 +7,7 @@
 #include "bus/channels.h"
 #include "envdesign/planner_heartbeat_t.hpp"
 
+#include "../support/ports.h"
 #include "../support/process.h"
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <mutex>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -37,10 +39,16 @@ inline std::string binary(const std::string &name) {
     return std::string(ENVDESIGN_BIN_DIR) + "/" + name;
 }
 
-// A URL of our own for this test process; `n` > 0 for more clusters at once.
+// A URL of our own for this test process (a port claimed for it, ../support/ports.h); `n` > 0
+// for more clusters at once. The same `n` gives the same URL.
 inline std::string unique_url(int n = 0) {
-    return "udpm://239.255.76.67:" + std::to_string(40000 + (getpid() + 7919 * n) % 20000) +
-           "?ttl=0&recv_buf_size=4194304";
+    static std::mutex mutex;
+    static std::map<int, int> ports;
+    std::lock_guard lock(mutex);
+    auto [at, claimed] = ports.try_emplace(n, 0);
+    if (claimed)
+        at->second = testing::claim_udp_port();
+    return testing::udpm_test_url(at->second) + "&recv_buf_size=4194304";
 }
 
 using testing::Process;

@@ -24,7 +24,10 @@ sys.path.insert(0, os.path.join(ROOT, "clients", "python"))
 import envdesign_auth  # noqa: E402
 import envdesign_client  # noqa: E402
 
-URL = f"udpm://239.255.76.67:{20001 + (os.getpid() % 10000) * 2}?ttl=0"
+sys.path.insert(0, os.path.join(ROOT, "tests", "support"))
+from test_ports import claim_udp_port, udpm_test_url  # noqa: E402
+
+URL = udpm_test_url(claim_udp_port())
 SAME = ("status", "design", "objective", "terms", "baseline", "tasks",
         "limit_reached")
 
@@ -119,7 +122,7 @@ class PythonClient(unittest.TestCase):
         with self.assertRaises(envdesign_client.RemoteError) as caught:
             envdesign_client.design(os.path.join(ROOT, "examples", "restaurant",
                                                  "a-one-task-t1.textproto"),
-                                    URL.replace(URL.split(":")[-1].split("?")[0], "19999"),
+                                    udpm_test_url(claim_udp_port()),
                                     give_up_after_s=1, resend_after_s=0.3)
         self.assertEqual(caught.exception.exit_code, 1)
 
@@ -129,7 +132,7 @@ class SameTextAsTheCli(unittest.TestCase):
     output against `envdesign watch` on the same bus, which prints each result it hears with
     the CLI's own formatter (result_text), so both format the very message the coordinator
     sent (a second run's counts, e.g. break-even's designs evaluated in full, may differ)."""
-    url = URL.replace(URL.split(":")[-1].split("?")[0], str(21001 + (os.getpid() % 10000) * 2))
+    url = udpm_test_url(claim_udp_port())
     CASES = [["examples/restaurant/a-one-task-t1.textproto"],
              ["examples/restaurant/b-two-tasks-t1.textproto"],
              ["examples/restaurant/c-two-tasks-t10.textproto"],
@@ -251,7 +254,7 @@ def write_switches_spec(folder):
 class PythonClientKeepsItsRequest(unittest.TestCase):
     """The Python client says every 2 s that it still waits: a coordinator with
     --client-timeout 3 keeps its 6 s search, and drops it once the client is killed."""
-    url = URL.replace(URL.split(":")[-1].split("?")[0], str(22001 + (os.getpid() % 10000) * 2))
+    url = udpm_test_url(claim_udp_port())
 
     def setUp(self):
         self.work = tempfile.mkdtemp()
@@ -303,7 +306,7 @@ class PythonClientKeepsItsRequest(unittest.TestCase):
 
 class PythonClientWithKey(unittest.TestCase):
     """A cluster whose services sign and verify with a key (the C++ side of the trailer)."""
-    url = URL.replace(URL.split(":")[-1].split("?")[0], str(20002 + (os.getpid() % 10000) * 2))
+    url = udpm_test_url(claim_udp_port())
 
     @classmethod
     def setUpClass(cls):
@@ -354,7 +357,7 @@ class PythonClientWithKey(unittest.TestCase):
 
 class InstalledPackage(unittest.TestCase):
     """The package as a user installs it, against a cluster of its own."""
-    url = f"udpm://239.255.76.67:{62000 + os.getpid() % 2000}?ttl=0"  # apart from the others
+    url = udpm_test_url(claim_udp_port())
 
     @classmethod
     def setUpClass(cls):
@@ -482,7 +485,7 @@ class ForgedFragments(unittest.TestCase):
     messages in reassembly and the bytes they hold stay within UdpmBus's bounds while the
     forger sends several times more, the process's peak memory with them, and a genuine
     fragmented message sent in the middle still arrives whole."""
-    url = f"udpm://239.255.76.67:{64000 + os.getpid() % 1000}?ttl=0"  # apart from the others
+    url = udpm_test_url(claim_udp_port())
 
     def test_bounded_and_the_genuine_message_arrives(self):
         Bus = envdesign_client.UdpmBus

@@ -164,6 +164,28 @@ TEST_F(ServiceConfig, BadValuesNameTheirLineAndCheckConfigCatchesWhatStartUpWoul
     EXPECT_NE(r.output.find("--lcm-url"), std::string::npos) << r.output;
 }
 
+// A UDP port another program holds without sharing it: LCM prints "bind: Address already in
+// use" and its receiver stays deaf (a test process once crashed on it). Each service exits 1
+// at start-up, naming the port, instead of running without hearing anything.
+TEST_F(ServiceConfig, AServiceOnAPortAnotherProgramHoldsExitsNamingThePort) {
+    int port = testing::claim_udp_port();
+    int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+    sockaddr_in any{};
+    any.sin_family = AF_INET;
+    any.sin_port = htons(static_cast<std::uint16_t>(port));
+    any.sin_addr.s_addr = htonl(INADDR_ANY);
+    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr *>(&any), sizeof any), 0);
+    for (std::string service : {"envdesign-coordinator", "envdesign-planner"}) {
+        Outcome r = run("timeout 20 " + binary(service) + " --lcm-url '" +
+                        testing::udpm_test_url(port) + "' --name held");
+        EXPECT_EQ(r.code, 1) << service << ": " << r.output;
+        EXPECT_NE(r.output.find("LCM cannot receive on UDP port " + std::to_string(port)),
+                  std::string::npos)
+            << service << ": " << r.output;
+    }
+    ::close(fd);
+}
+
 // --check-config also finds what start-up would fail on beyond the flags: a bridge --problem
 // spec that does not load (named by its id and its file's line), and a --state-dir whose
 // evaluation file cannot be opened (here a directory in its place), for the coordinator and

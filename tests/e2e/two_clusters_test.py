@@ -25,13 +25,16 @@ os.environ["ENVDESIGN_PYTHON_TYPES"] = os.path.join(BUILD, "python")
 sys.path.insert(0, os.path.join(ROOT, "clients", "python"))
 import envdesign_client  # noqa: E402
 from envdesign import design_progress_t, design_result_t, evaluation_t, job_t  # noqa: E402
+sys.path.insert(0, os.path.join(ROOT, "tests", "support"))
+from test_ports import claim_udp_port, udpm_test_url  # noqa: E402
 
 ENVDESIGN = os.path.join(BUILD, "bin", "envdesign")
 RESTAURANT = os.path.join(ROOT, "examples", "restaurant")
 
 
-def port_url(offset):
-    return f"udpm://239.255.76.67:{30001 + (os.getpid() % 5000) * 2 + offset}?ttl=0"
+def port_url(_name):
+    """A port of this test's own (tests/support/test_ports.py)."""
+    return udpm_test_url(claim_udp_port())
 
 
 def wait_for(path, text, timeout_s=15):

@@ -65,7 +65,9 @@ def main():
     parser.add_argument("--binary-dir", default=os.path.join(ROOT, "build", "bin"))
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix="envdesign-cluster-bench-")
-    url = f"udpm://239.255.76.67:{21001 + (os.getpid() % 5000) * 2}?ttl=0"
+    sys.path.insert(0, os.path.join(ROOT, "tests", "support"))
+    from test_ports import claim_udp_port, udpm_test_url
+    url = udpm_test_url(claim_udp_port())
     cluster = ["bash", os.path.join(ROOT, "deploy", "cluster.sh")]
     env = dict(os.environ, ENVDESIGN_BIN=args.binary_dir)
     where = ["--lcm-url", url, "--dir", os.path.join(work, "cluster")]
