@@ -1,5 +1,6 @@
 #include "design/design_explanation.h"
 
+#include "design/behaviour/behaviour.h"
 #include "design/behaviour/explicability.h"
 
 #include <algorithm>
@@ -109,7 +110,7 @@ DesignExplanation explain_design(const DesignProblem &problem, const DesignResul
             out.ranking.push_back(*point);
     // EXPLAINING: each task's choice moves with T and alpha, so the crossings of break_even.h
     // (linear in alpha and f_T) do not hold; none are computed (designs_compared 0).
-    if (problem.weights.behaviour != RobotBehaviour::EXPLAINING)
+    if (!behaviour_of(problem.weights.behaviour).may_explain)
         out.break_even = break_even(problem.weights, out.chosen, log.points());
     return out;
 }

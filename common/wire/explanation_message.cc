@@ -1,5 +1,6 @@
 #include "wire/explanation_message.h"
 
+#include "design/behaviour/behaviour.h"
 #include "wire/model_explanation_message.h"
 
 namespace envdesign::wire {
@@ -43,19 +44,6 @@ envdesign::task_explanation_t task_explanation_message(const design::DesignProbl
     m.expected_plan = t.expected_plan.value_or(std::vector<std::string>{});
     m.expected_plan_length = length(m.expected_plan.size());
     return m;
-}
-
-const char *behaviour_name(design::RobotBehaviour behaviour) {
-    switch (behaviour) {
-    case design::RobotBehaviour::COST_OPTIMAL:
-        return "COST_OPTIMAL";
-    case design::RobotBehaviour::COST_OPTIMAL_BEST_CASE:
-        return "COST_OPTIMAL_BEST_CASE";
-    case design::RobotBehaviour::EXPLAINING:
-        return "EXPLAINING";
-    default:
-        return "EXPLICABLE";
-    }
 }
 
 const char *distance_name(design::Distance distance) {
@@ -106,7 +94,7 @@ envdesign::explanation_t explanation_message(const design::DesignProblem &proble
     m.gamma = e.weights.gamma;
     m.horizon = e.weights.horizon;
     m.distance = distance_name(e.weights.distance);
-    m.robot_behaviour = behaviour_name(e.weights.behaviour);
+    m.robot_behaviour = design::behaviour_of(e.weights.behaviour).name;
     m.discounted_horizon = e.discounted_horizon;
     m.least_ie = e.least_ie;
     m.least_inexplicability = e.least_inexplicability;

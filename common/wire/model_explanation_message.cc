@@ -1,5 +1,6 @@
 #include "wire/model_explanation_message.h"
 
+#include "design/behaviour/behaviour.h"
 #include "design/behaviour/explaining.h"
 
 #include <cmath>
@@ -24,7 +25,7 @@ design::TaskExplanation model_explanation_value(const envdesign::model_explanati
 void put_option(const design::ObjectiveWeights &weights, const design::TaskExplicability &t,
                 envdesign::task_result_t &m) {
     m.has_explanation =
-        weights.behaviour == design::RobotBehaviour::EXPLAINING && t.explanation.has_value();
+        design::behaviour_of(weights.behaviour).may_explain && t.explanation.has_value();
     m.explained = false;
     m.explicable_ie = t.ie;
     if (!m.has_explanation) {

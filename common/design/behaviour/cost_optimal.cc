@@ -1,5 +1,6 @@
 #include "design/behaviour/cost_optimal.h"
 
+#include "design/behaviour/behaviour.h"
 #include "design/behaviour/explicability.h"
 #include "design/behaviour/optimal_plan_graph.h"
 #include "design/behaviour/worst_case.h"
@@ -47,25 +48,6 @@ std::vector<std::string> graph_actions(const OptimalPlanGraph &graph,
 
 } // namespace
 
-bool is_cost_optimal(RobotBehaviour behaviour) {
-    return behaviour == RobotBehaviour::COST_OPTIMAL ||
-           behaviour == RobotBehaviour::COST_OPTIMAL_BEST_CASE;
-}
-
-std::string behaviour_name(RobotBehaviour behaviour) {
-    switch (behaviour) {
-    case RobotBehaviour::EXPLICABLE:
-        return "EXPLICABLE";
-    case RobotBehaviour::COST_OPTIMAL:
-        return "COST_OPTIMAL";
-    case RobotBehaviour::COST_OPTIMAL_BEST_CASE:
-        return "COST_OPTIMAL_BEST_CASE";
-    case RobotBehaviour::EXPLAINING:
-        return "EXPLAINING";
-    }
-    return "?";
-}
-
 TaskExplicability evaluate_cost_optimal(const ModelPair &models, const ObjectiveWeights &weights,
                                         PlanCache &planner, const Deadline &deadline) {
     PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline);
@@ -100,8 +82,7 @@ TaskExplicability evaluate_cost_optimal(const ModelPair &models, const Objective
     OptimalPlanGraph graph = optimal_plan_graph(robot_task, robot.cost, *heuristic, limits);
     if (graph.status == OptimalPlanGraph::Status::LIMIT)
         return {};
-    Case which =
-        weights.behaviour == RobotBehaviour::COST_OPTIMAL_BEST_CASE ? Case::BEST : Case::WORST;
+    Case which = behaviour_of(weights.behaviour).best_case ? Case::BEST : Case::WORST;
     HumanCost seen = human_cost_of_optimal_plans(graph, robot_task, human_task, which, limits);
     if (seen.status == HumanCost::Status::LIMIT)
         return {};

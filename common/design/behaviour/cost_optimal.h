@@ -23,12 +23,6 @@
 
 namespace envdesign::design {
 
-// Whether `behaviour` is one of the two evaluated here.
-bool is_cost_optimal(RobotBehaviour behaviour);
-
-// "EXPLICABLE", "COST_OPTIMAL", ... as in the spec file.
-std::string behaviour_name(RobotBehaviour behaviour);
-
 // `weights.behaviour` must be COST_OPTIMAL or COST_OPTIMAL_BEST_CASE. The optimal costs
 // come through `planner` (cached); the graph and the product are built here.
 // Throws pddl::ParseError if a model cannot be grounded.

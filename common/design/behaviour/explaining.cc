@@ -21,10 +21,10 @@ std::optional<TaskExplanation> nothing_to_tell(const TaskExplicability &t, doubl
 
 } // namespace
 
-TaskExplicability evaluate_task_behaviour(const ModelPair &models, const ObjectiveWeights &w,
-                                          PlanCache &planner, const Deadline &deadline) {
+TaskExplicability evaluate_explaining(const ModelPair &models, const ObjectiveWeights &w,
+                                      PlanCache &planner, const Deadline &deadline) {
     TaskExplicability t = evaluate_explicability(models, w.distance, planner, deadline);
-    if (w.behaviour != RobotBehaviour::EXPLAINING || t.status == ExplicabilityStatus::LIMIT)
+    if (t.status == ExplicabilityStatus::LIMIT)
         return t;
     PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline);
     if (robot.status == PlanStatus::LIMIT)

@@ -27,9 +27,9 @@
 
 namespace envdesign::design {
 
-// evaluate_explicability, and in EXPLAINING mode the robot's optimal plan and a minimal
+// Both options: evaluate_explicability, and the robot's optimal plan with a minimal
 // explanation of it (t.explanation). LIMIT (an empty evaluation) if the deadline passed.
-TaskExplicability evaluate_task_behaviour(const ModelPair &models, const ObjectiveWeights &weights,
-                                          PlanCache &planner, const Deadline &deadline);
+TaskExplicability evaluate_explaining(const ModelPair &models, const ObjectiveWeights &weights,
+                                      PlanCache &planner, const Deadline &deadline);
 
 } // namespace envdesign::design

@@ -1,5 +1,7 @@
 #include "design/objective/design_point.h"
 
+#include "design/behaviour/behaviour.h"
+
 #include <cmath>
 
 namespace envdesign::design {
@@ -7,7 +9,7 @@ namespace envdesign::design {
 DesignPoint design_point(const DesignProblem &problem, const Configuration &configuration,
                          const std::vector<TaskExplicability> &tasks) {
     DesignPoint point{configuration, design_cost(problem, configuration), 0, 0, {}, {}};
-    if (problem.weights.behaviour == RobotBehaviour::EXPLAINING) {
+    if (behaviour_of(problem.weights.behaviour).may_explain) {
         for (std::size_t i = 0; i < tasks.size() && i < problem.tasks.size(); ++i) {
             TaskExplicability t = tasks[i];
             t.plan.clear();

@@ -1,5 +1,6 @@
 #include "design/objective/objective.h"
 
+#include "design/behaviour/behaviour.h"
 #include "design/objective/formula.h"
 
 #include <algorithm>
@@ -109,7 +110,7 @@ bool ranks_before(const RankedDesign &a, const RankedDesign &b) {
 
 BehaviourChoice choose_behaviour(const ObjectiveWeights &w, const TaskExplicability &t) {
     BehaviourChoice act{t.status == ExplicabilityStatus::SOLVED, false, t.ie, t.robot_cost, 0};
-    if (w.behaviour != RobotBehaviour::EXPLAINING || !t.explanation || !t.explanation->found)
+    if (!behaviour_of(w.behaviour).may_explain || !t.explanation || !t.explanation->found)
         return act;
     const TaskExplanation &x = *t.explanation;
     double told = w.explanation_cost * static_cast<double>(x.differences.size());

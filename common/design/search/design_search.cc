@@ -1,5 +1,6 @@
 #include "design/search/design_search.h"
 
+#include "design/behaviour/behaviour.h"
 #include "design/search/exhaustive_search.h"
 #include "design/search/witness_learning.h"
 #include "design/search/witness_search.h"
@@ -12,7 +13,7 @@ DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
     // EXPLAINING: a task's value depends on every difference between its two models (the
     // explanation), not only on its witness plans, so the witness argument does not hold;
     // the exhaustive search (with its bounds, which do hold) stays exact.
-    bool explaining = problem.weights.behaviour == RobotBehaviour::EXPLAINING;
+    bool explaining = !behaviour_of(problem.weights.behaviour).value_follows_witnesses;
     bool witness = options.method == SearchMethod::WITNESS && !options.relevant;
     std::optional<DesignResult> proven;
     if (witness && explaining && witness::explaining_applies(problem, TouchIndex(problem), options))

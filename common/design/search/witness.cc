@@ -1,5 +1,7 @@
 #include "design/search/witness.h"
 
+#include "design/behaviour/behaviour.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -301,7 +303,7 @@ WitnessTouch TouchIndex::touching(const Configuration &configuration, int task,
     // plan invalid for people changes it, so on the human side every action of every
     // optimal plan is a witness (docs/design-search.md). Everywhere else `plan` is enough.
     const std::vector<std::string> *human_witness = &evaluation.plan;
-    if (problem_.weights.behaviour == RobotBehaviour::COST_OPTIMAL &&
+    if (behaviour_of(problem_.weights.behaviour).every_optimal_action_witnesses &&
         std::isfinite(evaluation.human_plan_cost)) {
         if (!evaluation.optimal_actions) {
             out.known = false;

@@ -1,5 +1,7 @@
 #include "design/search/witness_bound.h"
 
+#include "design/behaviour/behaviour.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -21,7 +23,7 @@ bool contains(const std::vector<int> &sorted, int value) {
 SupersetBound::SupersetBound(const DesignProblem &problem, const TouchIndex &index)
     : problem_(problem), index_(index), tasks_(static_cast<int>(problem.tasks.size())),
       pool_(tasks_), horizon_(discounted_horizon(problem.weights)),
-      floors_hold_(problem.weights.behaviour == RobotBehaviour::EXPLICABLE) {
+      floors_hold_(behaviour_of(problem.weights.behaviour).takes_most_explicable_plan) {
     for (int m = 0; m < index.size(); ++m) {
         const ModificationClass &c = index.of(m);
         bool negative = problem.weights.beta * problem.modifications[m].cost < 0;

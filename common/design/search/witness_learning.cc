@@ -1,6 +1,6 @@
 #include "design/search/witness_learning.h"
 
-#include "design/behaviour/cost_optimal.h"
+#include "design/behaviour/behaviour.h"
 #include "design/search/addition_floors.h"
 #include "design/search/hitting_set.h"
 
@@ -93,7 +93,7 @@ void DesignLearner::probe_shortcuts() {
 
 Cone cone_of(const DesignProblem &problem, const SupersetBound &bound, const Configuration &design,
              const std::vector<Record> &records) {
-    if (problem.weights.behaviour == RobotBehaviour::EXPLAINING)
+    if (!behaviour_of(problem.weights.behaviour).value_follows_witnesses)
         return Cone{design, std::nullopt}; // no lemma there: the design alone
     Cone cone{design, std::vector<int>{}};
     for (std::size_t t = 0; t < records.size() && cone.escapes; ++t) {
@@ -154,8 +154,9 @@ bool DesignLearner::only_adding_added_everywhere() const {
 // optimal plan's, with restricting modifications only (cost_optimal_floors).
 bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
-    bool behaviour = w.behaviour == RobotBehaviour::EXPLICABLE ||
-                     (is_cost_optimal(w.behaviour) && bound_.always().empty()) ||
+    const Behaviour &b = behaviour_of(w.behaviour);
+    bool behaviour = b.takes_most_explicable_plan ||
+                     (b.runs_an_optimal_plan && bound_.always().empty()) ||
                      explaining_applies(problem_, index_, options_);
     return options_.hitting_sets && behaviour && root_ && result_.best &&
            std::isfinite(result_.best->objective.value) && only_adding_added_everywhere() &&
@@ -165,7 +166,7 @@ bool DesignLearner::applies() const {
 
 bool explaining_applies(const DesignProblem &problem, const TouchIndex &index,
                         const DesignSearchOptions &options) {
-    if (problem.weights.behaviour != RobotBehaviour::EXPLAINING || !options.hitting_sets ||
+    if (!behaviour_of(problem.weights.behaviour).may_explain || !options.hitting_sets ||
         options.ranking > 1)
         return false;
     for (int m = 0; m < index.size(); ++m)
@@ -209,7 +210,7 @@ std::optional<RootFacts> DesignLearner::root_facts() {
     }
     facts.lower_floors.resize(tasks_);
     facts.lower_robot_floors.resize(tasks_);
-    if (is_cost_optimal(problem_.weights.behaviour))
+    if (behaviour_of(problem_.weights.behaviour).runs_an_optimal_plan)
         facts.lower_floors = cost_optimal_floors();
     else if (!bound_.always().empty()) {
         std::string why;
@@ -227,14 +228,14 @@ std::optional<RootFacts> DesignLearner::root_facts() {
         facts.lower_floors = std::move(floors->below);
         facts.lower_robot_floors = std::move(floors->robot_below);
     }
-    bool explaining = problem_.weights.behaviour == RobotBehaviour::EXPLAINING;
+    const Behaviour &behaviour = behaviour_of(problem_.weights.behaviour);
     for (int t = 0; t < tasks_; ++t) {
         const Record &r = root_->tasks[t];
-        bool settled = !explaining && r && r->touch.known && r->touch.all.empty() &&
+        bool settled = behaviour.value_follows_witnesses && r && r->touch.known && r->touch.all.empty() &&
                        facts.lower_floors[t].empty();
         facts.settled.push_back(settled ? &r->evaluation : nullptr);
     }
-    if (explaining) {
+    if (behaviour.may_explain) {
         try {
             explaining_.emplace(problem_, index_, root_->tasks);
         } catch (const pddl::ParseError &e) {
@@ -300,7 +301,7 @@ bool DesignLearner::prove_by_hitting_sets() {
 // The record of `task` under `design` from a smaller evaluated configuration, when every
 // modification added since is restricting and touches none of its witnesses.
 Record DesignLearner::inherited(const Configuration &design, int task) const {
-    if (problem_.weights.behaviour == RobotBehaviour::EXPLAINING)
+    if (!behaviour_of(problem_.weights.behaviour).value_follows_witnesses)
         return nullptr; // an explanation may change without a witness touched
     for (const auto &known : known_) {
         const Configuration &configuration = known.first; // a lambda below uses it: clang 14

@@ -1,6 +1,6 @@
 #include "design/search/witness_search.h"
 
-#include "design/behaviour/cost_optimal.h"
+#include "design/behaviour/behaviour.h"
 #include "design/search/witness_bound.h"
 #include "design/search/witness_learning.h"
 
@@ -70,11 +70,11 @@ public:
           learner_(problem, evaluator, options, index_, bound_, result_, ranking_,
                    [this] { report(); }),
           tasks_(static_cast<int>(problem.tasks.size())),
-          phase_only_(problem.weights.behaviour == RobotBehaviour::EXPLAINING) {
+          phase_only_(!behaviour_of(problem.weights.behaviour).value_follows_witnesses) {
         note_added_everywhere();
-        if (is_cost_optimal(problem.weights.behaviour))
+        if (behaviour_of(problem.weights.behaviour).runs_an_optimal_plan)
             result_.notes.push_back(
-                "robot_behaviour " + behaviour_name(problem.weights.behaviour) +
+                "robot_behaviour " + std::string(behaviour_of(problem.weights.behaviour).name) +
                 ": the witnesses are the worst (best) optimal plan and, for a finite worst case, "
                 "every action of every optimal plan; the queue bounds the IE term by its least "
                 "value, and the hitting-set phase, where every modification restricts, by the "
