@@ -6,43 +6,18 @@ namespace envdesign::arrivals {
 
 ArrivalSource::~ArrivalSource() = default;
 
-void ArrivalQueue::push(Arrival arrival) {
-    {
-        std::lock_guard lock(mutex_);
-        queue_.push_back(std::move(arrival));
-    }
-    changed_.notify_all();
-}
+void ArrivalQueue::push(Arrival arrival) { queue_.push(std::move(arrival)); }
 
-std::size_t ArrivalQueue::size() const {
-    std::lock_guard lock(mutex_);
-    return queue_.size();
-}
+std::size_t ArrivalQueue::size() const { return queue_.size(); }
 
 bool ArrivalQueue::wait(double timeout_s) {
-    std::unique_lock lock(mutex_);
-    changed_.wait_for(lock, std::chrono::duration<double>(timeout_s),
-                      [&] { return woken_ || !queue_.empty(); });
-    woken_ = false; // one wake() ends one wait
-    return !queue_.empty();
+    return queue_.wait_for(std::chrono::duration<double>(timeout_s));
 }
 
 std::size_t ArrivalQueue::take(std::vector<Arrival> &out, std::size_t max) {
-    std::lock_guard lock(mutex_);
-    std::size_t n = 0;
-    for (; n < max && !queue_.empty(); ++n) {
-        out.push_back(std::move(queue_.front()));
-        queue_.pop_front();
-    }
-    return n;
+    return queue_.take(out, max);
 }
 
-void ArrivalQueue::wake() {
-    {
-        std::lock_guard lock(mutex_);
-        woken_ = true;
-    }
-    changed_.notify_all();
-}
+void ArrivalQueue::wake() { queue_.wake(); }
 
 } // namespace envdesign::arrivals

@@ -8,11 +8,9 @@
 //   if (queue.wait(0.2)) queue.take(batch, 4096);
 
 #include "arrivals/arrival.h"
+#include "concurrency/blocking_queue.h"
 
-#include <condition_variable>
 #include <cstddef>
-#include <deque>
-#include <mutex>
 #include <vector>
 
 namespace envdesign::arrivals {
@@ -41,10 +39,7 @@ public:
     void wake() override;
 
 private:
-    mutable std::mutex mutex_;
-    std::condition_variable changed_;
-    std::deque<Arrival> queue_;
-    bool woken_ = false;
+    concurrency::BlockingQueue<Arrival> queue_;
 };
 
 } // namespace envdesign::arrivals

@@ -10,7 +10,6 @@
 #include "pddl/parse_error.h"
 #include "wire/job_messages.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -37,51 +36,26 @@ LocalRedesigns::LocalRedesigns(bus::Bus &bus, std::string instance,
 }
 
 LocalRedesigns::~LocalRedesigns() {
-    {
-        std::lock_guard lock(mutex_);
-        stopping_ = true;
-    }
-    ready_.notify_all();
+    jobs_.close(concurrency::Leftovers::drop); // the running redesign finishes, no other
     thread_.join();
 }
 
 void LocalRedesigns::start(std::int64_t request_id, const arrivals::Request &request) {
-    {
-        std::lock_guard lock(mutex_);
-        jobs_.push_back({request_id, request});
-    }
-    ready_.notify_one();
+    jobs_.push({request_id, request});
 }
 
 void LocalRedesigns::reweigh(std::int64_t request_id, const arrivals::Request &request) {
-    {
-        std::lock_guard lock(mutex_);
-        auto queued = std::find_if(jobs_.begin(), jobs_.end(), [&](const Job &j) {
-            return j.reweigh && j.request.problem_id == request.problem_id;
-        });
-        if (queued != jobs_.end())
-            *queued = {request_id, request, true};
-        else
-            jobs_.push_back({request_id, request, true});
-    }
-    ready_.notify_one();
+    jobs_.replace_or_push({request_id, request, true}, [&](const Job &queued) {
+        return queued.reweigh && queued.request.problem_id == request.problem_id;
+    });
 }
 
 void LocalRedesigns::run() {
-    while (true) {
-        Job job;
-        {
-            std::unique_lock lock(mutex_);
-            ready_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
-            if (stopping_)
-                return;
-            job = std::move(jobs_.front());
-            jobs_.pop_front();
-        }
-        if (job.reweigh)
-            reweigh(job);
+    while (auto job = jobs_.pop()) {
+        if (job->reweigh)
+            reweigh(*job);
         else
-            redesign(job);
+            redesign(*job);
     }
 }
 

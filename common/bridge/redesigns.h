@@ -16,13 +16,12 @@
 
 #include "arrivals/redesign.h"
 #include "bus/bus.h"
+#include "concurrency/blocking_queue.h"
 #include "envdesign/design_progress_t.hpp"
 #include "envdesign/design_request_t.hpp"
 #include "envdesign/design_result_t.hpp"
 #include "envdesign/spec_t.hpp"
 
-#include <condition_variable>
-#include <deque>
 #include <functional>
 #include <map>
 #include <memory>
@@ -88,10 +87,7 @@ private:
     std::string instance_;
     Answered answered_;
     std::map<std::string, std::unique_ptr<arrivals::Redesigner>> redesigners_;
-    std::mutex mutex_;
-    std::condition_variable ready_;
-    std::deque<Job> jobs_;
-    bool stopping_ = false;
+    concurrency::BlockingQueue<Job> jobs_;
     std::thread thread_; // last: starts once the rest exists
 };
 

@@ -9,33 +9,6 @@
 
 namespace envdesign::cluster {
 
-void Inbox::push(envdesign::evaluation_t answer) {
-    {
-        std::lock_guard lock(mutex_);
-        answers_.push_back(std::move(answer));
-    }
-    ready_.notify_one();
-}
-
-std::optional<envdesign::evaluation_t> Inbox::pop(Clock::time_point until) {
-    std::unique_lock lock(mutex_);
-    ready_.wait_until(lock, until, [&] { return woken_ || !answers_.empty(); });
-    woken_ = false;
-    if (answers_.empty())
-        return std::nullopt;
-    envdesign::evaluation_t answer = std::move(answers_.front());
-    answers_.pop_front();
-    return answer;
-}
-
-void Inbox::wake() {
-    {
-        std::lock_guard lock(mutex_);
-        woken_ = true;
-    }
-    ready_.notify_one();
-}
-
 namespace {
 
 // Job ids start at a random point so that ids of a restarted coordinator (or of another

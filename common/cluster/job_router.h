@@ -7,16 +7,15 @@
 //   Inbox inbox;                                   // a request's search thread
 //   std::uint64_t owner = router.open(inbox);
 //   std::int64_t id = router.send(owner, job);     // publishes when a planner slot is free
-//   auto answer = inbox.pop(deadline);             // (job_id, evaluation_t)
+//   auto answer = inbox.pop_until(deadline);       // (job_id, evaluation_t)
 //   router.close(owner);
 
 #include "bus/bus.h"
 #include "cluster/planner_pool.h"
+#include "concurrency/blocking_queue.h"
 #include "envdesign/evaluation_t.hpp"
 
 #include <atomic>
-#include <condition_variable>
-#include <deque>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -24,22 +23,9 @@
 
 namespace envdesign::cluster {
 
-// Answers for one request, from the bus thread to its search thread.
-class Inbox {
-public:
-    using Clock = std::chrono::steady_clock;
-
-    void push(envdesign::evaluation_t answer);
-    // The next answer; nullopt once `until` passed or wake() was called.
-    std::optional<envdesign::evaluation_t> pop(Clock::time_point until);
-    void wake();
-
-private:
-    std::mutex mutex_;
-    std::condition_variable ready_;
-    std::deque<envdesign::evaluation_t> answers_;
-    bool woken_ = false;
-};
+// Answers for one request, from the bus thread to its search thread: pop_until(deadline)
+// returns nullopt once the deadline passed or wake() was called.
+using Inbox = concurrency::BlockingQueue<envdesign::evaluation_t>;
 
 class JobRouter {
 public:

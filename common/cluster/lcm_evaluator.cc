@@ -38,7 +38,7 @@ void LcmEvaluator::evaluate(const std::vector<design::ConfigurationEvaluation> &
         in_flight_ = static_cast<int>(batch.in_flight.size());
         if (batch.in_flight.empty())
             break;
-        if (auto answer = inbox_.pop(Clock::now() + std::chrono::milliseconds(50)))
+        if (auto answer = inbox_.pop_until(Clock::now() + std::chrono::milliseconds(50)))
             take(batch, *answer);
         if (!give_up_at && (cancelled_ || error_))
             give_up_at = Clock::now();

@@ -30,11 +30,7 @@ Planner::Planner(bus::Bus &bus, PlannerConfig config)
 
 Planner::~Planner() {
     subscriptions_.clear();
-    {
-        std::lock_guard lock(mutex_);
-        closing_ = true;
-    }
-    work_ready_.notify_all();
+    queue_.close();
     for (auto &worker : workers_)
         worker.join();
 }
@@ -172,9 +168,7 @@ void Planner::on_job(const envdesign::job_t &job) {
     followers_[content]; // this job computes it
     Pending pending{job, Clock::now()};
     if (specs_.complete(job.spec_hash)) {
-        queue_.push_back(std::move(pending));
-        lock.unlock();
-        work_ready_.notify_one();
+        queue_.push(std::move(pending));
         return;
     }
     parked_[job.spec_hash].push_back(std::move(pending));
@@ -201,7 +195,7 @@ void Planner::on_withdraw(const envdesign::job_t &job) {
         auto waiting = [&](const Pending &p) { return p.job.job_id == job.job_id; };
         auto parked = parked_.find(job.spec_hash);
         auto same = followers_.find(job_content(job));
-        if (std::erase_if(queue_, waiting) > 0 ||
+        if (queue_.remove_if(waiting) > 0 ||
             (parked != parked_.end() && std::erase_if(parked->second, waiting) > 0)) {
             abandon(job); // a job waiting for its content's answer takes its place
         } else if (same != followers_.end() &&
@@ -231,9 +225,8 @@ void Planner::abandon(const envdesign::job_t &job) {
     followers_.erase(it);
     if (waiting.empty())
         return;
-    queue_.push_back({waiting.front(), Clock::now()});
+    queue_.push({waiting.front(), Clock::now()});
     followers_[job_content(job)].assign(waiting.begin() + 1, waiting.end());
-    work_ready_.notify_one();
 }
 
 void Planner::on_chunk(const envdesign::spec_chunk_t &chunk) {
@@ -254,11 +247,10 @@ void Planner::on_chunk(const envdesign::spec_chunk_t &chunk) {
         }
         asked_.erase(chunk.spec_hash);
         for (auto &p : ready)
-            queue_.push_back(std::move(p));
+            queue_.push(std::move(p));
     }
     bus_.log().info("request {} | spec {} received", chunk.request_id,
                     chunk.spec_hash.substr(0, 12));
-    work_ready_.notify_all();
 }
 
 // Asks the coordinator of parked jobs for their spec, again after need_retry_s.
@@ -323,16 +315,11 @@ void Planner::heartbeat(bool stopping) {
 
 void Planner::work() {
     WorkerCaches caches(config_.max_specs, config_.job_memory_bytes, config_.workers);
-    while (true) {
-        Pending pending;
+    while (auto next = queue_.pop()) { // nullopt: closed and drained
+        Pending pending = std::move(*next);
         std::shared_ptr<std::atomic<bool>> stop;
         {
             std::unique_lock lock(mutex_);
-            work_ready_.wait(lock, [&] { return closing_ || !queue_.empty(); });
-            if (queue_.empty())
-                return;
-            pending = std::move(queue_.front());
-            queue_.pop_front();
             if (withdrawn_.erase(pending.job.job_id) || cancelled_) {
                 abandon(pending.job);
                 lock.unlock();
@@ -397,10 +384,9 @@ std::vector<envdesign::evaluation_t> Planner::answered(const envdesign::job_t &j
         if (waiting.empty())
             return shared;
         // Out of time (or failed): the waiting jobs had their own time; the first computes.
-        queue_.push_back({waiting.front(), Clock::now()});
+        queue_.push({waiting.front(), Clock::now()});
         followers_[content].assign(waiting.begin() + 1, waiting.end());
     }
-    work_ready_.notify_one();
     return shared;
 }
 

@@ -29,11 +29,11 @@
 #include "bus/status.h"
 #include "cluster/answer_memory.h"
 #include "cluster/planner_specs.h"
+#include "concurrency/blocking_queue.h"
 #include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"
 
 #include <atomic>
-#include <condition_variable>
 #include <deque>
 #include <map>
 #include <memory>
@@ -105,9 +105,9 @@ private:
     bus::Bus &bus_;
     PlannerConfig config_;
     PlannerSpecs specs_;
-    mutable std::mutex mutex_;
-    std::condition_variable work_ready_;
-    std::deque<Pending> queue_;
+    mutable std::mutex mutex_; // guards what follows; queue_ locks itself, inside mutex_
+    // Jobs ready for a worker. Closed when the planner goes: the workers drain it.
+    concurrency::BlockingQueue<Pending> queue_;
     std::map<std::string, std::vector<Pending>> parked_; // by spec hash
     std::map<std::string, std::pair<std::string, Clock::time_point>>
         asked_; // hash -> coordinator, when
@@ -119,7 +119,6 @@ private:
     // computes) is queued, parked or running.
     std::map<std::string, std::vector<envdesign::job_t>> followers_;
     PlannerStats stats_;
-    bool closing_ = false;
     std::atomic<bool> stopping_{false};
     std::atomic<bool> cancelled_{false}; // after stop(): running searches end as at a limit
     struct Running {
@@ -129,7 +128,7 @@ private:
     };
     std::map<std::int64_t, Running> running_;    // by job id, under mutex_
     std::size_t idle_resident_ = 0;              // the process with no job running, under mutex_
-    std::set<std::int64_t> withdrawn_;           // queued jobs taken back, under mutex_
+    std::set<std::int64_t> withdrawn_;           // taken back as a worker popped them, under mutex_
     std::atomic<Clock::time_point> last_beat_{}; // workers beat too (a withdrawn job let go)
     Clock::time_point last_tick_{};
     bus::StatusPublisher status_;

@@ -1,14 +1,12 @@
 #include "design/evaluation/local_evaluator.h"
 
-#include "design/behaviour/cost_optimal.h"
-#include "design/behaviour/explaining.h"
+#include "design/behaviour/evaluate_task.h"
 #include "design/behaviour/explicability.h"
 #include "design/evaluation/dispatcher.h"
 
-#include <condition_variable>
-#include <deque>
+#include "concurrency/blocking_queue.h"
+
 #include <exception>
-#include <mutex>
 #include <thread>
 
 namespace envdesign::design {
@@ -27,53 +25,9 @@ struct Answer {
 };
 
 // Jobs go to the workers, answers come back to the dispatcher.
-class Channel {
-public:
-    void send(Job job) {
-        {
-            std::lock_guard lock(mutex_);
-            jobs_.push_back(job);
-        }
-        job_ready_.notify_one();
-    }
-    // Blocks until a job arrives; nullopt once closed.
-    std::optional<Job> receive_job() {
-        std::unique_lock lock(mutex_);
-        job_ready_.wait(lock, [&] { return closed_ || !jobs_.empty(); });
-        if (jobs_.empty())
-            return std::nullopt;
-        Job job = jobs_.front();
-        jobs_.pop_front();
-        return job;
-    }
-    void answer(Answer a) {
-        {
-            std::lock_guard lock(mutex_);
-            answers_.push_back(std::move(a));
-        }
-        answer_ready_.notify_one();
-    }
-    Answer receive_answer() {
-        std::unique_lock lock(mutex_);
-        answer_ready_.wait(lock, [&] { return !answers_.empty(); });
-        Answer a = std::move(answers_.front());
-        answers_.pop_front();
-        return a;
-    }
-    void close() {
-        {
-            std::lock_guard lock(mutex_);
-            closed_ = true;
-        }
-        job_ready_.notify_all();
-    }
-
-private:
-    std::mutex mutex_;
-    std::condition_variable job_ready_, answer_ready_;
-    std::deque<Job> jobs_;
-    std::deque<Answer> answers_;
-    bool closed_ = false;
+struct Channel {
+    concurrency::BlockingQueue<Job> jobs;       // closed once no job is in flight
+    concurrency::BlockingQueue<Answer> answers; // never closed: each job sends one
 };
 
 } // namespace
@@ -86,8 +40,6 @@ LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
 TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
                                                 const Deadline &deadline) {
     ModelPair models = configured_models(problem_, configuration, task);
-    if (is_cost_optimal(problem_.weights.behaviour))
-        return evaluate_cost_optimal(models, problem_.weights, cache_, deadline);
     return evaluate_task_behaviour(models, problem_.weights, cache_, deadline);
 }
 
@@ -119,14 +71,14 @@ void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
     std::vector<std::thread> threads;
     for (int i = 0; i < workers_; ++i) {
         threads.emplace_back([&] {
-            while (auto job = channel.receive_job()) {
+            while (auto job = channel.jobs.pop()) {
                 Answer a{{*job, std::nullopt, {}}, nullptr};
                 try {
                     a.answer = run(batch[job->configuration].configuration, *job, deadline);
                 } catch (...) {
                     a.error = std::current_exception();
                 }
-                channel.answer(std::move(a));
+                channel.answers.push(std::move(a));
             }
         });
     }
@@ -137,12 +89,12 @@ void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
             auto job = dispatcher.next_job();
             if (!job)
                 break;
-            channel.send(*job);
+            channel.jobs.push(*job);
             ++in_flight;
         }
         if (in_flight == 0)
             break;
-        Answer a = channel.receive_answer();
+        Answer a = *channel.answers.pop();
         --in_flight;
         if (a.answer.job.kind == JobKind::EXPLICABILITY)
             ++task_evaluations_;
@@ -151,7 +103,7 @@ void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
         if (!a.error)
             dispatcher.receive(std::move(a.answer));
     }
-    channel.close();
+    channel.jobs.close();
     for (auto &t : threads)
         t.join();
     if (error)
