@@ -231,8 +231,8 @@ std::optional<RootFacts> DesignLearner::root_facts() {
     const Behaviour &behaviour = behaviour_of(problem_.weights.behaviour);
     for (int t = 0; t < tasks_; ++t) {
         const Record &r = root_->tasks[t];
-        bool settled = behaviour.value_follows_witnesses && r && r->touch.known && r->touch.all.empty() &&
-                       facts.lower_floors[t].empty();
+        bool settled = behaviour.value_follows_witnesses && r && r->touch.known &&
+                       r->touch.all.empty() && facts.lower_floors[t].empty();
         facts.settled.push_back(settled ? &r->evaluation : nullptr);
     }
     if (behaviour.may_explain) {
