@@ -41,8 +41,21 @@ TEST(WatchBridge, PrintsTheDistributionEstimates) {
     }
     std::string replay = write_replay(dir + "/mix.csv", "task", booth_mix(100, 9));
     publish(dir, replay, 80, {"--rate", "2000"});
-    // The bridge publishes each estimate at once (--publish-hz 50) and once a second idle.
-    std::this_thread::sleep_for(2500ms);
+    // The bridge publishes each estimate at once (--publish-hz 50) and once a second idle:
+    // wait until the JSON watcher printed the one of all 100 samples (seconds under load).
+    auto heard_all = [&] {
+        std::ifstream in(out);
+        for (std::string line; std::getline(in, line);) {
+            auto message = nlohmann::json::parse(line, nullptr, false);
+            if (!message.is_discarded() && message.value("kind", "") == "distribution" &&
+                message.value("samples", 0.0) == 100)
+                return true;
+        }
+        return false;
+    };
+    for (int i = 0; i < 600 && !heard_all(); ++i)
+        std::this_thread::sleep_for(50ms);
+    std::this_thread::sleep_for(500ms); // the text watcher heard the same message
     json_watch.signal(SIGINT);
     text_watch.signal(SIGINT);
     EXPECT_EQ(json_watch.wait(10s), std::optional<int>(0)) << json_watch.output();
