@@ -71,6 +71,20 @@ int LmCutLandmarks::compute(std::span<const ground::FactId> facts, const CutCall
     return total;
 }
 
+int LmCutLandmarks::compute_residual(std::span<const ground::FactId> facts,
+                                     std::span<const int> spent, const CutCallback &on_cut) {
+    spent_ = spent;
+    int h = 0;
+    try {
+        h = compute(facts, on_cut);
+    } catch (...) {
+        spent_ = {};
+        throw;
+    }
+    spent_ = {};
+    return h;
+}
+
 template <class Visit> void LmCutLandmarks::for_each_supported(int prop, Visit visit) {
     const std::span<const int> users = relaxed_.precondition_of(prop);
     for (int w = mask_offset_[prop]; w < mask_offset_[prop + 1]; ++w) {
@@ -87,6 +101,9 @@ void LmCutLandmarks::first_exploration(std::span<const ground::FactId> facts) {
     const int num_ops = relaxed_.num_operators();
     for (int op = 0; op < num_ops; ++op)
         ops_[op] = {relaxed_.cost(op), num_preconditions_[op], -1, UNREACHED, 0};
+    if (!spent_.empty()) // the goal operator (the last) costs 0 and is never spent
+        for (int op = 0; op < relaxed_.num_task_operators(); ++op)
+            ops_[op].cost -= spent_[relaxed_.task_operator(op)];
     // FD queues a state's facts in variable order; the bucket queue is LIFO, so this order
     // decides which of several cost-0 preconditions becomes the supporter.
     ranked_facts_.assign(facts.begin(), facts.end());

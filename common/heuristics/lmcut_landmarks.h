@@ -49,6 +49,13 @@ public:
     // unreachable in the delete relaxation. Not thread-safe.
     int compute(std::span<const ground::FactId> facts, const CutCallback &on_cut = {});
 
+    // As compute(), with task operator o costing cost(o) - spent[o] (spent is indexed by
+    // task operator, 0 <= spent[o] <= cost(o)): the rest of a cost partition whose other
+    // part the caller holds as landmarks of its own (incremental LM-cut, Pommerening and
+    // Helmert 2013). The sum of both parts is an admissible estimate.
+    int compute_residual(std::span<const ground::FactId> facts, std::span<const int> spent,
+                         const CutCallback &on_cut = {});
+
 private:
     static constexpr int UNREACHED = 0x7fffffff;
 
@@ -107,6 +114,7 @@ private:
     std::vector<int> cut_;
     std::vector<ground::FactId> ranked_facts_; // the state's facts in FD's order
     std::vector<ground::OperatorId> landmark_;
+    std::span<const int> spent_; // of compute_residual, for first_exploration
 };
 
 } // namespace envdesign::heuristics

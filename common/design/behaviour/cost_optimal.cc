@@ -2,6 +2,7 @@
 
 #include "design/behaviour/behaviour.h"
 #include "design/behaviour/explicability.h"
+#include "design/behaviour/inherited_lmcut.h"
 #include "design/behaviour/optimal_plan_graph.h"
 #include "design/behaviour/worst_case.h"
 #include "ground/grounder.h"
@@ -36,6 +37,18 @@ GraphLimits limits_of(const planning::PlannerOptions &options, const Deadline &d
                    seconds;
     };
     return limits;
+}
+
+// Any admissible estimates give the same graph; with LM-cut, those inherited along the path
+// cost a fraction of LM-cut from scratch in every state (inherited_lmcut.h).
+OptimalPlanGraph plan_graph(const ground::GroundTask &task, long long optimal_cost,
+                            const planning::PlannerOptions &options, const GraphLimits &limits) {
+    if (options.heuristic == heuristics::HeuristicKind::LMCUT) {
+        InheritedLmCut estimates(task);
+        return optimal_plan_graph(task, optimal_cost, estimates, limits);
+    }
+    auto heuristic = heuristics::make_heuristic(options.heuristic, task);
+    return optimal_plan_graph(task, optimal_cost, *heuristic, limits);
 }
 
 std::vector<std::string> graph_actions(const OptimalPlanGraph &graph,
@@ -78,8 +91,7 @@ TaskExplicability evaluate_cost_optimal(const ModelPair &models, const Objective
     // from-table of a block no modification restricts doubled the graph's states).
     ground::remove_unread(robot_task);
     ground::remove_unread(human_task);
-    auto heuristic = heuristics::make_heuristic(planner.options().heuristic, robot_task);
-    OptimalPlanGraph graph = optimal_plan_graph(robot_task, robot.cost, *heuristic, limits);
+    OptimalPlanGraph graph = plan_graph(robot_task, robot.cost, planner.options(), limits);
     if (graph.status == OptimalPlanGraph::Status::LIMIT)
         return {};
     Case which = behaviour_of(weights.behaviour).best_case ? Case::BEST : Case::WORST;

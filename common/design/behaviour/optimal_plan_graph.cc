@@ -32,19 +32,23 @@ bool is_goal(const ground::GroundTask &task, const search::UnpackedState &state)
     return true;
 }
 
+// A state registered but not yet estimated: its estimate waits for an edge that needs it.
+constexpr int UNKNOWN = -1;
+
 // Step 1 of the header: every state with g + h <= c*, expanded in g order. A plain struct:
 // steps 2 and 3 read what it found.
 struct ForwardSearch {
-    ForwardSearch(const ground::GroundTask &task, long long bound, heuristics::Heuristic &h,
+    ForwardSearch(const ground::GroundTask &task, long long bound, GraphEstimates &estimates,
                   const GraphLimits &limits)
-        : task_(task), bound_(bound), heuristic_(h), limits_(limits), registry_(task),
+        : task_(task), bound_(bound), estimates_(estimates), limits_(limits), registry_(task),
           successors_(task), state_(registry_.codec()), successor_(registry_.codec()) {}
 
     // False when a limit stopped it.
     bool run() {
         StateID init = registry_.insert_facts(task_.initial_state).id;
         registry_.unpack(init, state_);
-        grow(init, heuristic_.compute(heuristics::StateView(state_.facts, state_.bits)));
+        grow(init);
+        h_[init] = estimates_.initial(init, state_);
         if (h_[init] == heuristics::DEAD_END || h_[init] > bound_)
             return true;
         g_[init] = 0;
@@ -64,7 +68,7 @@ struct ForwardSearch {
 
     const ground::GroundTask &task_;
     long long bound_;
-    heuristics::Heuristic &heuristic_;
+    GraphEstimates &estimates_;
     const GraphLimits &limits_;
     search::StateRegistry registry_;
     search::SuccessorGenerator successors_;
@@ -76,14 +80,13 @@ struct ForwardSearch {
     std::vector<RawEdge> edges_;
     Queue open_;
 
-    void grow(StateID id, int h) {
+    void grow(StateID id) {
         if (id >= g_.size()) {
             g_.resize(id + 1, UNREACHED);
-            h_.resize(id + 1, 0);
+            h_.resize(id + 1, UNKNOWN);
             expanded_.resize(id + 1, 0);
             goal_.resize(id + 1, 0);
         }
-        h_[id] = h;
     }
 
     void expand(StateID s) {
@@ -93,13 +96,10 @@ struct ForwardSearch {
         successors_.applicable_operators(state_, applicable_);
         for (ground::OperatorId op : applicable_) {
             auto [t, is_new] = registry_.insert_successor(s, op);
-            if (is_new) {
-                registry_.unpack(t, successor_);
-                grow(t,
-                     heuristic_.compute(heuristics::StateView(successor_.facts, successor_.bits)));
-            }
+            if (is_new)
+                grow(t);
             long long g = g_[s] + task_.operators[op].cost;
-            if (h_[t] == heuristics::DEAD_END || g + h_[t] > bound_)
+            if (!within_bound(s, op, t, bound_ - g))
                 continue;
             edges_.push_back({s, t, op});
             if (g < g_[t]) {
@@ -107,6 +107,18 @@ struct ForwardSearch {
                 open_.push({g, t});
             }
         }
+        estimates_.expanded(s);
+    }
+
+    // Whether h*(t) may be <= budget, as far as the estimates tell; estimates t if needed.
+    bool within_bound(StateID s, ground::OperatorId op, StateID t, long long budget) {
+        if (budget < 0 || estimates_.inherited(s, op) > budget)
+            return false;
+        if (h_[t] == UNKNOWN) {
+            registry_.unpack(t, successor_);
+            h_[t] = estimates_.successor(t, successor_, s, op);
+        }
+        return h_[t] != heuristics::DEAD_END && h_[t] <= budget;
     }
 
     bool limited() const {
@@ -116,9 +128,30 @@ struct ForwardSearch {
             return false;
         std::size_t bytes = registry_.memory_bytes() + edges_.capacity() * sizeof(RawEdge) +
                             g_.capacity() * (sizeof(long long) + sizeof(int) + 2) +
-                            open_.size() * sizeof(std::pair<long long, StateID>);
+                            open_.size() * sizeof(std::pair<long long, StateID>) +
+                            estimates_.memory_bytes();
         return bytes > limits_.memory_limit_bytes;
     }
+};
+
+// A heuristic of the planner as estimates: no path-dependent part.
+class HeuristicEstimates : public GraphEstimates {
+public:
+    explicit HeuristicEstimates(heuristics::Heuristic &h) : h_(h) {}
+    int initial(StateID, const search::UnpackedState &state) override { return of(state); }
+    int inherited(StateID, ground::OperatorId) const override { return 0; }
+    int successor(StateID, const search::UnpackedState &state, StateID,
+                  ground::OperatorId) override {
+        return of(state);
+    }
+    void expanded(StateID) override {}
+    std::size_t memory_bytes() const override { return 0; }
+
+private:
+    int of(const search::UnpackedState &state) {
+        return h_.compute(heuristics::StateView(state.facts, state.bits));
+    }
+    heuristics::Heuristic &h_;
 };
 
 // Step 2: h' by Dijkstra backwards over the kept edges, from the goal states expanded.
@@ -157,11 +190,19 @@ std::vector<long long> backward_distances(const ForwardSearch &f) {
 
 } // namespace
 
+GraphEstimates::~GraphEstimates() = default;
+
 OptimalPlanGraph optimal_plan_graph(const ground::GroundTask &task, long long optimal_cost,
                                     heuristics::Heuristic &heuristic, const GraphLimits &limits) {
+    HeuristicEstimates estimates(heuristic);
+    return optimal_plan_graph(task, optimal_cost, estimates, limits);
+}
+
+OptimalPlanGraph optimal_plan_graph(const ground::GroundTask &task, long long optimal_cost,
+                                    GraphEstimates &estimates, const GraphLimits &limits) {
     OptimalPlanGraph graph;
     graph.cost = optimal_cost;
-    ForwardSearch forward(task, optimal_cost, heuristic, limits);
+    ForwardSearch forward(task, optimal_cost, estimates, limits);
     bool finished = forward.run();
     graph.states_explored = forward.registry_.size();
     if (!finished)

@@ -1,0 +1,65 @@
+#pragma once
+// LM-cut estimates for the optimal-plan graph's forward search (optimal_plan_graph.h) that
+// a successor inherits from its parent (incremental LM-cut, Pommerening and Helmert, ICAPS
+// 2013; issue 24: the graph's LM-cut calls were half of a COST_OPTIMAL Blocksworld run).
+//
+// LM-cut's cuts L of a state s, with costs c(L), are disjunctive action landmarks and a
+// cost partition: every operator o has sum_{L containing o} c(L) <= cost(o). Every plan
+// from s's successor t = s.a, with a in front, is a plan from s; so each cut of s without a
+// is a landmark of t too, and those cuts, a subset of a partition, still bound h*(t) by
+// their cost sum. The successor's estimate is that sum plus LM-cut on the costs they leave
+// (LmCutLandmarks::compute_residual): the cuts of both parts form a cost partition again,
+// so the estimate is admissible, and t passes its cuts on in turn. Only the residual is
+// searched for: usually one or two cuts instead of one per unit of h. inherited() is the
+// first part alone, which prunes some successors without any search.
+//
+// Example:
+//   InheritedLmCut estimates(task);
+//   OptimalPlanGraph graph = optimal_plan_graph(task, c_star, estimates, limits);
+
+#include "design/behaviour/optimal_plan_graph.h"
+#include "heuristics/lmcut_landmarks.h"
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace envdesign::design {
+
+class InheritedLmCut : public GraphEstimates {
+public:
+    explicit InheritedLmCut(const ground::GroundTask &task);
+
+    int initial(search::StateID id, const search::UnpackedState &state) override;
+    int inherited(search::StateID parent, ground::OperatorId op) const override;
+    int successor(search::StateID child, const search::UnpackedState &state, search::StateID parent,
+                  ground::OperatorId op) override;
+    void expanded(search::StateID parent) override;
+    std::size_t memory_bytes() const override;
+
+    // The cuts a state holds (until it is expanded), each as (cost, operators sorted).
+    std::vector<std::pair<int, std::vector<ground::OperatorId>>> cuts_of(search::StateID id) const;
+
+private:
+    struct Cut {
+        int cost;
+        int begin; // its operators: operators_[begin .. end), ascending
+        int end;
+    };
+
+    bool contains(const Cut &cut, ground::OperatorId op) const;
+    // h of `state` on the costs spent_ leaves; its cuts are appended to `found`.
+    int residual(const search::UnpackedState &state, std::vector<int> &found);
+    // Adds (sign 1) or takes back (-1) the costs of `cuts` in spent_.
+    void spend(const std::vector<int> &cuts, int sign);
+    void keep(search::StateID id, std::vector<int> cuts);
+
+    heuristics::LmCutLandmarks lmcut_;
+    std::vector<Cut> cuts_;                     // every cut found, shared by the states
+    std::vector<ground::OperatorId> operators_; // the cuts' operators
+    std::vector<std::vector<int>> state_cuts_;  // per state: indices into cuts_
+    std::vector<int> spent_;                    // per task operator, for one residual
+    std::size_t cut_entries_ = 0;               // in state_cuts_, for memory_bytes()
+};
+
+} // namespace envdesign::design
