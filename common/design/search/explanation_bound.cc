@@ -1,6 +1,7 @@
 #include "design/search/explanation_bound.h"
 
 #include "design/model/configuration.h"
+#include "design/reconciliation/explanation_hitting.h"
 #include "design/search/witness.h"
 #include "validate/plan_validator.h"
 
@@ -84,6 +85,32 @@ const ExplanationBound::Breakers &ExplanationBound::breaking(int t, const Pooled
         }
         if (breaks)
             out.differences.push_back(i);
+    }
+    return out;
+}
+
+std::vector<std::pair<std::vector<std::string>, double>>
+ExplanationBound::explanation_plans(const DesignProblem &problem, const Configuration &design,
+                                    int t, const TaskExplanation &x, const Deadline &deadline) {
+    std::vector<std::pair<std::vector<std::string>, double>> out;
+    Task &task = tasks_[t];
+    if (!task.robot_plan_cost || !x.found || x.differences.empty() || x.robot_plan.empty())
+        return out; // nothing cheaper to break, or no bound on explaining to sharpen
+    ModelPair models = configured_models(problem, design, t);
+    ExplanationSearch search;
+    search.differences = model_differences(models);
+    if (!all_restricting(models, search.differences))
+        return out; // the subset enumeration keeps no plans: nothing to harvest
+    hitting_set_explanation(models, x.robot_plan, planner_, deadline, search);
+    // The cache keeps plans met under every design: each is checked against this one.
+    for (auto &plan : planner_.cheaper_plans(x.robot_plan)) {
+        if (task.returned.count(plan))
+            continue;
+        auto v = validate::validate_plan(models.human_domain, models.human_problem, plan);
+        if (!v.valid)
+            continue;
+        task.returned.insert(plan);
+        out.emplace_back(std::move(plan), static_cast<double>(v.cost));
     }
     return out;
 }

@@ -19,11 +19,17 @@
 // (hitting_set.h). docs/design-search.md.
 
 #include "design/design_problem.h"
+#include "design/evaluation/plan_cache.h"
+#include "design/evaluation/task_evaluation.h"
 #include "design/reconciliation/model_differences.h"
+#include "design/search/deadline.h"
 #include "design/search/witness_bound.h"
 
 #include <map>
 #include <optional>
+#include <set>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace envdesign::design::witness {
@@ -46,13 +52,26 @@ public:
     // What can break `plan`, a plan of task t's human model, in a design that keeps it.
     const Breakers &breaking(int t, const PooledPlan &plan) const;
 
+    // Plans of task t's human model under `design` (restricting differences only remove plans,
+    // so a plan of P_H(design) + E is one of P_H(design)), with their cost there, that the
+    // minimal explanation of `x` meets and that no earlier call returned. The evaluator's
+    // explanation search meets them too but keeps them to itself; pooled, each bounds the
+    // explaining option of every design that keeps it, as any pooled plan does.
+    std::vector<std::pair<std::vector<std::string>, double>>
+    explanation_plans(const DesignProblem &problem, const Configuration &design, int t,
+                      const TaskExplanation &x, const Deadline &deadline);
+    // The searches explanation_plans ran (the evaluator's counters do not hold them).
+    CacheCounters planner_counters() const { return planner_.counters(); }
+
 private:
     struct Task {
         ModelPair models; // with no modification
         std::vector<ModelDifference> differences;
         std::optional<double> robot_plan_cost;
         mutable std::map<const void *, Breakers> breaking; // by the plan's steps
+        std::set<std::vector<std::string>> returned;       // by explanation_plans
     };
+    PlanCache planner_{planning::PlannerOptions{}}; // explanation_plans' own searches
     const TouchIndex &index_;
     Configuration every_; // every modification
     std::vector<Task> tasks_;

@@ -72,6 +72,8 @@ private:
     std::optional<std::vector<double>> probe(const Configuration &design,
                                              const std::vector<int> &tasks);
     Record inherited(const Configuration &design, int task) const;
+    void learn_explanation_plans(const Configuration &design);
+    void note_explanation_plans();
 
     const DesignProblem &problem_;
     Evaluator &evaluator_;
@@ -92,6 +94,7 @@ private:
     double lower_bound_;
     bool limit_seen_ = false;
     long long designs_ = 0;
+    long long explanation_plans_ = 0; // pooled by learn_explanation_plans
 };
 
 } // namespace envdesign::design::witness
