@@ -134,12 +134,8 @@ TEST(UdpmGuard, ABusDropsTheWrappingFragmentAndTakesGenuineOnes) {
 // The subscription throws instead, naming the port, and the bus stays usable for nothing else.
 TEST(UdpmGuard, APortHeldWithoutSharingIsAnErrorAtSubscription) {
     int port = testing::claim_udp_port();
-    int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
-    sockaddr_in any{};
-    any.sin_family = AF_INET;
-    any.sin_port = htons(static_cast<std::uint16_t>(port));
-    any.sin_addr.s_addr = htonl(INADDR_ANY);
-    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr *>(&any), sizeof any), 0);
+    int fd = testing::bind_udp_port_unshared(port);
+    ASSERT_GE(fd, 0);
     Bus bus(testing::udpm_test_url(port), quiet());
     try {
         auto sub = bus.subscribe_raw(CHANNEL, [](const void *, int) {});

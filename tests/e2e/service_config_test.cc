@@ -169,12 +169,8 @@ TEST_F(ServiceConfig, BadValuesNameTheirLineAndCheckConfigCatchesWhatStartUpWoul
 // at start-up, naming the port, instead of running without hearing anything.
 TEST_F(ServiceConfig, AServiceOnAPortAnotherProgramHoldsExitsNamingThePort) {
     int port = testing::claim_udp_port();
-    int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
-    sockaddr_in any{};
-    any.sin_family = AF_INET;
-    any.sin_port = htons(static_cast<std::uint16_t>(port));
-    any.sin_addr.s_addr = htonl(INADDR_ANY);
-    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr *>(&any), sizeof any), 0);
+    int fd = testing::bind_udp_port_unshared(port);
+    ASSERT_GE(fd, 0);
     for (std::string service : {"envdesign-coordinator", "envdesign-planner"}) {
         Outcome r = run("timeout 20 " + binary(service) + " --lcm-url '" +
                         testing::udpm_test_url(port) + "' --name held");

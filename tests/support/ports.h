@@ -28,18 +28,28 @@ namespace envdesign::testing {
 inline constexpr int TEST_PORT_FIRST = 20000;
 inline constexpr int TEST_PORT_LAST = 32767;
 
-// True when no socket of any process is bound to UDP `port`.
-inline bool udp_port_is_free(int port) {
+// A UDP socket bound to `port` on every address without SO_REUSEADDR, as a program that
+// does not share its port holds it; -1 when the port is taken.
+inline int bind_udp_port_unshared(int port) {
     int fd = socket(AF_INET, SOCK_DGRAM, 0);
     if (fd < 0)
-        return false;
+        return -1;
     sockaddr_in address{};
     address.sin_family = AF_INET;
     address.sin_port = htons(static_cast<std::uint16_t>(port));
     address.sin_addr.s_addr = htonl(INADDR_ANY);
-    bool free = bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0;
+    if (bind(fd, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0)
+        return fd;
     close(fd);
-    return free;
+    return -1;
+}
+
+// True when no socket of any process is bound to UDP `port`.
+inline bool udp_port_is_free(int port) {
+    int fd = bind_udp_port_unshared(port);
+    if (fd >= 0)
+        close(fd);
+    return fd >= 0;
 }
 
 // A UDP port for this process alone; throws when every port of the range is taken.
