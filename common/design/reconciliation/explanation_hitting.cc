@@ -5,7 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <functional>
+#include <map>
 #include <set>
 
 namespace envdesign::design {
@@ -58,45 +58,68 @@ bool valid_with(const ModelPair &models, const ExplanationSearch &search, int d,
 // plan alone (it reads nothing negatively, and effects are unconditional: removing an
 // initial atom no step reads changes no step), so the validator is asked only about the
 // others. `known` false: a step did not match a schema; every difference is checked.
+// `from_init`: the atoms a step's positive precondition or the positive goal reads before any
+// step adds them (a step reads before its own effects).
 struct PlanReads {
     bool known = false;
     std::set<std::string> schemas;
     std::set<pddl::Atom> atoms;
+    std::set<pddl::Atom> from_init;
 };
+
+std::vector<std::string> step_words(const std::string &step) {
+    std::vector<std::string> words;
+    std::string word;
+    for (char c : step) {
+        bool separator = c == '(' || c == ')' || std::isspace(static_cast<unsigned char>(c));
+        if (!separator)
+            word += c;
+        else if (!word.empty())
+            words.push_back(std::move(word)), word.clear();
+    }
+    if (!word.empty())
+        words.push_back(std::move(word));
+    return words;
+}
+
+// `atom` of `action` with its parameters replaced by the step's arguments (`words`).
+pddl::Atom ground_in_step(const pddl::Atom &atom, const pddl::Action &action,
+                          const std::vector<std::string> &words) {
+    pddl::Atom ground{atom.predicate, {}, {}};
+    for (const auto &arg : atom.args) {
+        auto it = std::find_if(action.parameters.begin(), action.parameters.end(),
+                               [&](const pddl::TypedName &p) { return p.name == arg; });
+        ground.args.push_back(
+            it == action.parameters.end() ? arg : words[1 + (it - action.parameters.begin())]);
+    }
+    return ground;
+}
 
 PlanReads plan_reads(const ModelPair &models, const std::vector<std::string> &plan) {
     PlanReads reads;
+    std::set<pddl::Atom> added;
     for (const auto &step : plan) {
-        std::vector<std::string> words;
-        std::string word;
-        for (char c : step) {
-            bool separator = c == '(' || c == ')' || std::isspace(static_cast<unsigned char>(c));
-            if (!separator)
-                word += c;
-            else if (!word.empty())
-                words.push_back(std::move(word)), word.clear();
-        }
-        if (!word.empty())
-            words.push_back(std::move(word));
+        std::vector<std::string> words = step_words(step);
         const pddl::Action *action =
             words.empty() ? nullptr : models.human_domain.find_action(words[0]);
         if (!action || action->parameters.size() + 1 != words.size())
             return {};
         reads.schemas.insert(action->name);
         for (const auto &l : action->precondition) {
-            pddl::Atom ground{l.atom.predicate, {}, {}};
-            for (const auto &arg : l.atom.args) {
-                auto it = std::find_if(action->parameters.begin(), action->parameters.end(),
-                                       [&](const pddl::TypedName &p) { return p.name == arg; });
-                ground.args.push_back(it == action->parameters.end()
-                                          ? arg
-                                          : words[1 + (it - action->parameters.begin())]);
-            }
+            pddl::Atom ground = ground_in_step(l.atom, *action, words);
+            if (!l.negated && !added.count(ground))
+                reads.from_init.insert(ground);
             reads.atoms.insert(std::move(ground));
         }
+        for (const auto &l : action->effect)
+            if (!l.negated)
+                added.insert(ground_in_step(l.atom, *action, words));
     }
-    for (const auto &l : models.human_problem.goal)
+    for (const auto &l : models.human_problem.goal) {
+        if (!l.negated && !added.count(l.atom))
+            reads.from_init.insert(l.atom);
         reads.atoms.insert(l.atom);
+    }
     reads.known = true;
     return reads;
 }
@@ -134,58 +157,61 @@ bool all_restricting(const ModelPair &models, const std::vector<ModelDifference>
     return true;
 }
 
-std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, int size) {
-    std::vector<int> chosen, best;
-    std::vector<bool> in(size, false);
-    bool found = false;
-    // Branch on the elements of the first set not hit yet (smallest-first would be faster;
-    // the sets here are few).
-    std::function<void()> branch = [&] {
-        if (found && chosen.size() + 1 > best.size())
-            return; // cannot beat best: one more element at least is needed below
-        const std::vector<int> *open = nullptr;
-        for (const auto &s : sets) {
-            bool hit = false;
-            for (int e : s)
-                hit = hit || in[e];
-            if (!hit && (!open || s.size() < open->size()))
-                open = &s;
-        }
-        if (!open) {
-            std::vector<int> sorted = chosen;
-            std::sort(sorted.begin(), sorted.end());
-            if (!found || sorted.size() < best.size() ||
-                (sorted.size() == best.size() && sorted < best)) {
-                best = std::move(sorted);
-                found = true;
-            }
-            return;
-        }
-        for (int e : *open) {
-            in[e] = true;
-            chosen.push_back(e);
-            branch();
-            chosen.pop_back();
-            in[e] = false;
-        }
-    };
-    if (sets.empty())
-        return {};
-    branch();
-    return best;
+namespace {
+
+// Per difference: whether it breaks pi_R alone (never a candidate), and whether it removes an
+// initial atom the human's model holds once (the fast case of breaks_alone).
+struct Candidates {
+    std::vector<bool> breaks_robot;
+    std::vector<bool> init_once;
+};
+
+// Whether `plan` is invalid in P_H + {d} (`valid_here`: it is valid in P_H). An initial atom
+// held once and removed breaks a plan valid in P_H iff the plan reads it before a step adds it
+// (reads.from_init): until then the states differ in that atom alone, which nothing reads
+// negatively (d is restricting), after it they are equal, and costs read no atom. The
+// validator answers the other cases.
+bool breaks_alone(const ModelPair &models, const ExplanationSearch &search,
+                  const Candidates &candidates, int d, const std::vector<std::string> &plan,
+                  const PlanReads &reads, bool valid_here) {
+    const ModelDifference &difference = search.differences[d];
+    if (!may_break(difference, reads))
+        return false;
+    if (valid_here && reads.known && candidates.init_once[d])
+        return reads.from_init.count(difference.literal.atom) > 0;
+    return !valid_with(models, search, d, plan);
 }
 
-namespace {
+Candidates candidates_of(const ModelPair &models, const ExplanationSearch &search,
+                         const std::vector<std::string> &robot_plan) {
+    int n = static_cast<int>(search.differences.size());
+    std::map<pddl::Atom, int> held;
+    for (const auto &atom : models.human_problem.init)
+        ++held[atom];
+    Candidates c{std::vector<bool>(n), std::vector<bool>(n)};
+    for (int d = 0; d < n; ++d) {
+        const ModelDifference &x = search.differences[d];
+        auto it = held.find(x.literal.atom);
+        c.init_once[d] =
+            x.kind == DifferenceKind::INIT && !x.robot_has && it != held.end() && it->second == 1;
+    }
+    PlanReads reads = plan_reads(models, robot_plan);
+    for (int d = 0; d < n; ++d) // pi_R is valid in P_H (checked before)
+        c.breaks_robot[d] = breaks_alone(models, search, c, d, robot_plan, reads, true);
+    return c;
+}
 
 // The candidates (differences that keep pi_R) that `plan` does not survive alone.
 std::vector<int> breaking_alone(const ModelPair &models, const ExplanationSearch &search,
-                                const std::vector<bool> &breaks_robot,
+                                const Candidates &candidates,
                                 const std::vector<std::string> &plan) {
     PlanReads reads = plan_reads(models, plan);
+    bool valid_here =
+        validate::validate_plan(models.human_domain, models.human_problem, plan).valid;
     std::vector<int> hit;
-    for (int d = 0; d < static_cast<int>(breaks_robot.size()); ++d)
-        if (!breaks_robot[d] && may_break(search.differences[d], reads) &&
-            !valid_with(models, search, d, plan))
+    for (int d = 0; d < static_cast<int>(candidates.breaks_robot.size()); ++d)
+        if (!candidates.breaks_robot[d] &&
+            breaks_alone(models, search, candidates, d, plan, reads, valid_here))
             hit.push_back(d);
     return hit;
 }
@@ -194,14 +220,14 @@ std::vector<int> breaking_alone(const ModelPair &models, const ExplanationSearch
 // P_H here and cheaper than pi_R (cost `robot_cost`): the argument above holds for any such
 // plan, wherever it was found. False when one has an empty T (no explanation exists).
 bool sets_of_known_plans(const ModelPair &models, const std::vector<std::string> &robot_plan,
-                         long long robot_cost, const std::vector<bool> &breaks_robot,
+                         long long robot_cost, const Candidates &candidates,
                          const PlanCache &planner, const ExplanationSearch &search,
                          std::vector<std::vector<int>> &sets) {
     for (const auto &plan : planner.cheaper_plans(robot_plan)) {
         auto v = validate::validate_plan(models.human_domain, models.human_problem, plan);
         if (!v.valid || v.cost >= robot_cost)
             continue;
-        std::vector<int> hit = breaking_alone(models, search, breaks_robot, plan);
+        std::vector<int> hit = breaking_alone(models, search, candidates, plan);
         if (hit.empty())
             return false;
         if (std::find(sets.begin(), sets.end(), hit) == sets.end())
@@ -222,18 +248,17 @@ void hitting_set_explanation(const ModelPair &models, const std::vector<std::str
         search.status = ExplanationStatus::NONE; // and no restricting difference can mend it
         return;
     }
-    PlanReads robot_reads = plan_reads(models, robot_plan);
-    std::vector<bool> breaks_robot(n);
-    for (int d = 0; d < n; ++d)
-        breaks_robot[d] = may_break(search.differences[d], robot_reads) &&
-                          !valid_with(models, search, d, robot_plan);
+    Candidates candidates = candidates_of(models, search, robot_plan);
     std::vector<std::vector<int>> sets;
-    if (!sets_of_known_plans(models, robot_plan, robot.cost, breaks_robot, planner, search, sets)) {
+    if (!sets_of_known_plans(models, robot_plan, robot.cost, candidates, planner, search, sets)) {
         search.status = ExplanationStatus::NONE;
         return;
     }
+    int floor = 0;
     while (!deadline.expired()) {
-        std::vector<int> chosen = least_hitting_set(sets, n);
+        // The sets only grow, so the last least hitting set's size bounds the next one's.
+        std::vector<int> chosen = least_hitting_set(sets, n, floor);
+        floor = static_cast<int>(chosen.size());
         ++search.subsets_tried;
         ModelPair told = told_models(models, search.differences, chosen);
         auto v = validate::validate_plan(told.human_domain, told.human_problem, robot_plan);
@@ -248,7 +273,7 @@ void hitting_set_explanation(const ModelPair &models, const std::vector<std::str
         }
         if (best.status == PlanStatus::SOLVED && v.valid && best.cost < v.cost)
             planner.remember_cheaper_plan(robot_plan, best.plan);
-        std::vector<int> hit = breaking_alone(models, search, breaks_robot, best.plan);
+        std::vector<int> hit = breaking_alone(models, search, candidates, best.plan);
         if (hit.empty()) {
             search.status = ExplanationStatus::NONE;
             return;

@@ -19,17 +19,19 @@
 //     differences that break pi_R alone are never candidates;
 //   - a plan pi' of P_H + E cheaper than pi_R is a plan of P_H + E* unless E* holds some d that
 //     breaks pi' alone: every explanation hits T(pi') = {d : pi' invalid in P_H + {d}}.
-// The search: E = a least hitting set of the sets T found so far (an exact branch and bound;
-// ties: the lexicographically least); plan P_H + E; if its optimum equals c(pi_R), E is
+// The search: E = a least hitting set of the sets T found so far (exact; ties: see
+// least_hitting_set); plan P_H + E; if its optimum equals c(pi_R), E is
 // minimal (every explanation hits every T, and E is a least such set); else T(pi'), of the
 // plan found, is a new set E does not hit (pi' is valid in P_H + E), so the loop ends. T(pi')
 // empty: no explanation exists.
 // Any plan of P_H cheaper than pi_R gives such a T, wherever it was met: the search starts
 // from the sets of the plans earlier searches met (other designs of the same task, whose
-// human models differ: PlanCache::cheaper_plans), so one planner call often ends it. E is the
-// lexicographically least minimal explanation (it hits every T of every cheaper plan, and
-// every minimal explanation is among the least hitting sets of the sets known), so the
-// answer does not depend on which plans were met before.
+// human models differ: PlanCache::cheaper_plans), so one planner call often ends it. E is a
+// minimal explanation (it hits every T of every cheaper plan, and every minimal explanation is
+// among the least hitting sets of the sets known). Which one, of equally small ones, is
+// least_hitting_set's tie-break on the sets known, so it may depend on the plans met before:
+// it is not always the lexicographically least (warehouse 64 x 10, fetch-x03y02, empty design: a
+// lexicographically lesser explanation of the same size exists; docs/behaviours-explaining.md).
 
 #include "design/evaluation/plan_cache.h"
 #include "design/reconciliation/explanation_search.h"
@@ -40,9 +42,14 @@ namespace envdesign::design {
 // Whether every difference is restricting as above.
 bool all_restricting(const ModelPair &models, const std::vector<ModelDifference> &differences);
 
-// The least subset of `sets` (each a list of indices) hitting all of them, ascending; `size`
-// the number of indices. Exact; of equally small ones, the lexicographically least.
-std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, int size);
+// A least subset of `sets` (each a list of indices) hitting all of them, ascending; `size` the
+// number of indices. Exact. Of equally small ones, the first found by branching on the
+// smallest set not hit yet (the first of equally small ones), its elements in order: the
+// answer of the branch and bound this function had, kept so that explanations stay the same.
+// `at_least`: a size no hitting set is below, if the caller knows one (the least hitting set
+// of some of `sets` has it), else 0; it saves proving the smaller sizes empty.
+std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, int size,
+                                   int at_least = 0);
 
 // minimal_explanation's search when all_restricting(models, search.differences) holds.
 void hitting_set_explanation(const ModelPair &models, const std::vector<std::string> &robot_plan,
