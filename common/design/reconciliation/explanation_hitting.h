@@ -28,10 +28,9 @@
 // from the sets of the plans earlier searches met (other designs of the same task, whose
 // human models differ: PlanCache::cheaper_plans), so one planner call often ends it. E is a
 // minimal explanation (it hits every T of every cheaper plan, and every minimal explanation is
-// among the least hitting sets of the sets known). Which one, of equally small ones, is
-// least_hitting_set's tie-break on the sets known, so it may depend on the plans met before:
-// it is not always the lexicographically least (warehouse 64 x 10, fetch-x03y02, empty design: a
-// lexicographically lesser explanation of the same size exists; docs/behaviours-explaining.md).
+// among the least hitting sets of the sets known), and the lexicographically least one: every
+// minimal explanation is a least hitting set of the sets known, and least_hitting_set takes
+// the lexicographically least of those. So E does not depend on which plans were met before.
 
 #include "design/evaluation/plan_cache.h"
 #include "design/reconciliation/explanation_search.h"
@@ -43,9 +42,7 @@ namespace envdesign::design {
 bool all_restricting(const ModelPair &models, const std::vector<ModelDifference> &differences);
 
 // A least subset of `sets` (each a list of indices) hitting all of them, ascending; `size` the
-// number of indices. Exact. Of equally small ones, the first found by branching on the
-// smallest set not hit yet (the first of equally small ones), its elements in order: the
-// answer of the branch and bound this function had, kept so that explanations stay the same.
+// number of indices. Exact. Of equally small ones, the lexicographically least.
 // `at_least`: a size no hitting set is below, if the caller knows one (the least hitting set
 // of some of `sets` has it), else 0; it saves proving the smaller sizes empty.
 std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, int size,
