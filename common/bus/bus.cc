@@ -3,7 +3,11 @@
 #include "bus/log.h"
 #include "bus/udpm_guard.h"
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <bit>
+#include <mutex>
 #include <utility>
 
 namespace envdesign::bus {
@@ -73,12 +77,35 @@ void Bus::send(const std::string &channel, const void *data, int size, bool decl
         logger_->warn("request - | could not publish {} bytes on {}", size, channel);
 }
 
+namespace {
+
+// The inodes of this process's receive sockets on `port` (udpm_receive_sockets).
+std::vector<ino_t> receive_socket_inodes(std::uint16_t port) {
+    std::vector<ino_t> inodes;
+    for (int fd : udpm_receive_sockets(port)) {
+        struct stat s {};
+        if (fstat(fd, &s) == 0)
+            inodes.push_back(s.st_ino);
+    }
+    return inodes;
+}
+
+} // namespace
+
 Subscription Bus::subscribe_raw(const std::string &channel, RawHandler handler,
                                 int queue_capacity) {
     auto slot = std::make_unique<Subscription::Slot>(
         Subscription::Slot{this, std::move(handler), ReplayGuard()});
     auto port = guarded_ ? std::nullopt : udpm_port(url_);
-    std::size_t sockets_before = port ? udpm_receive_sockets(*port).size() : 0;
+    // A first subscription opens LCM's receive socket: one at a time in the process, so that
+    // the sockets before and after are this bus's doing alone.
+    static std::mutex opening;
+    std::unique_lock one_at_a_time(opening, std::defer_lock);
+    std::vector<ino_t> sockets_before;
+    if (port) {
+        one_at_a_time.lock();
+        sockets_before = receive_socket_inodes(*port);
+    }
     lcm::Subscription *raw =
         lcm_.subscribeFunction(channel, &Bus::trampoline, static_cast<void *>(slot.get()));
     if (!raw)
@@ -94,9 +121,16 @@ Subscription Bus::subscribe_raw(const std::string &channel, RawHandler handler,
 // LCM opens its udpm receive socket at the first subscription; the guard goes on it then.
 // No new socket means LCM could not bind the port (it prints "bind: Address already in use"
 // and goes on deaf): another program holds it without sharing. That is this bus's error,
-// said where it starts, not a service that silently never hears a message.
-void Bus::guard_receive_socket(std::uint16_t port, std::size_t sockets_before) {
-    if (udpm_receive_sockets(port).size() <= sockets_before)
+// said where it starts, not a service that silently never hears a message. (Sockets are
+// told apart by inode, not by descriptor: another bus may close one meanwhile and LCM's new
+// one take its number.)
+void Bus::guard_receive_socket(std::uint16_t port, const std::vector<ino_t> &sockets_before) {
+    std::vector<ino_t> now = receive_socket_inodes(port);
+    bool opened = std::any_of(now.begin(), now.end(), [&](ino_t socket) {
+        return std::find(sockets_before.begin(), sockets_before.end(), socket) ==
+               sockets_before.end();
+    });
+    if (!opened)
         throw BusError("LCM cannot receive on UDP port " + std::to_string(port) + " of '" + url_ +
                        "': another program holds the port without sharing it");
     guard_udpm_fragments(port);

@@ -34,6 +34,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 #include <spdlog/spdlog.h>
+#include <sys/types.h>
 
 #include <atomic>
 #include <chrono>
@@ -43,6 +44,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace envdesign::bus {
 
@@ -160,7 +162,7 @@ private:
     void send(const std::string &channel, const void *data, int size, bool declare_origin);
     void unsubscribe(lcm::Subscription *raw);
     void count_drop(const std::string &channel, Drop reason);
-    void guard_receive_socket(std::uint16_t port, std::size_t sockets_before);
+    void guard_receive_socket(std::uint16_t port, const std::vector<ino_t> &sockets_before);
 
     std::string url_;
     std::shared_ptr<spdlog::logger> logger_;

@@ -11,8 +11,10 @@
 //   jobs.close();                                      // waiters return; the rest drains
 //
 // wake() makes one wait return early, or the next one if none waits: a wait that returns
-// uses up the wake, whatever it returns. A closed queue still takes pushes (a worker that
-// drains it may queue follow-up work) unless it was closed with Leftovers::drop.
+// uses up the wake, whatever it returns. pop() is a wait too, so a `while (auto job =
+// jobs.pop())` worker ends on a wake(): wake only queues whose waiters expect it. A closed queue
+// still takes pushes (a worker that drains it may queue follow-up work) unless it was closed with
+// Leftovers::drop.
 
 #include <algorithm>
 #include <chrono>

@@ -152,17 +152,15 @@ TEST(UdpmGuard, APortHeldWithoutSharingIsAnErrorAtSubscription) {
 // beyond BUS_MAX_MESSAGE never arrives, one of a message within it does.
 TEST(UdpmGuard, FragmentsOfAMessageBeyondTheBusLimitAreDropped) {
     std::uint16_t port = static_cast<std::uint16_t>(testing::claim_udp_port());
-    int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
-    sockaddr_in any{};
-    any.sin_family = AF_INET;
-    any.sin_port = htons(port);
-    any.sin_addr.s_addr = htonl(INADDR_ANY);
-    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr *>(&any), sizeof any), 0);
+    int fd = testing::bind_udp_port_unshared(port);
+    ASSERT_GE(fd, 0);
     ASSERT_EQ(guard_udpm_fragments(port), 1);
     timeval wait{0, 300'000};
     ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &wait, sizeof wait);
     int out = ::socket(AF_INET, SOCK_DGRAM, 0);
-    sockaddr_in to = any;
+    sockaddr_in to{};
+    to.sin_family = AF_INET;
+    to.sin_port = htons(port);
     to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
     auto delivered = [&](std::uint32_t message_size) {
         std::uint32_t words[4] = {htonl(0x4c433033), htonl(9), htonl(message_size), htonl(0)};

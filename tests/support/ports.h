@@ -1,5 +1,5 @@
 #pragma once
-// The one allocator of UDP ports for tests that start an LCM bus (tests/support/ports.py is
+// The one allocator of UDP ports for tests that start an LCM bus (tests/support/test_ports.py is
 // its Python twin over the same claims). ctest runs many test processes at once, and LCM
 // cannot receive on a port another socket holds without SO_REUSEADDR ("bind: Address already
 // in use"), so each test process claims ports no other running test holds:

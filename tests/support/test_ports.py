@@ -33,7 +33,10 @@ def claim_udp_port():
         port = FIRST + (start + i) % span
         if (port - 7400) % 250 < 112:  # Cyclone DDS's domain ports
             continue
-        claim = open(os.path.join(CLAIMS, str(port)), "a+")
+        try:
+            claim = open(os.path.join(CLAIMS, str(port)), "a+")
+        except OSError:  # another user's claim file
+            continue
         try:
             fcntl.flock(claim, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
