@@ -59,6 +59,13 @@ TEST(LeastHittingSet, TheLexicographicallyLeastOfTheLeastOnRandomFamilies) {
         std::vector<std::vector<int>> first(sets.begin(), sets.end() - 1);
         int at_least = static_cast<int>(hitting_by_definition(first, size).size());
         EXPECT_EQ(least_hitting_set(sets, size, at_least), expected) << "trial " << trial;
+        // Some least hitting set: as small, ascending, and hitting every set.
+        std::vector<int> some = some_least_hitting_set(sets, size, at_least);
+        EXPECT_EQ(some.size(), expected.size()) << "trial " << trial;
+        EXPECT_TRUE(std::is_sorted(some.begin(), some.end()));
+        for (const auto &s : sets)
+            EXPECT_TRUE(std::find_first_of(s.begin(), s.end(), some.begin(), some.end()) != s.end())
+                << "trial " << trial;
     }
 }
 

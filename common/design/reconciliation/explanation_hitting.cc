@@ -236,6 +236,53 @@ bool sets_of_known_plans(const ModelPair &models, const std::vector<std::string>
     return true;
 }
 
+// The answer of telling `chosen`: FOUND when pi_R is then optimal for the human, else the
+// set T of the cheaper plan found joins `sets` (NEW_SET; NONE if T is empty: nothing breaks
+// that plan); LIMIT when the deadline passed.
+enum class Told { FOUND, NEW_SET, NONE, LIMIT };
+
+Told tell(const ModelPair &models, const std::vector<std::string> &robot_plan,
+          const std::vector<int> &chosen, const Candidates &candidates, PlanCache &planner,
+          const Deadline &deadline, ExplanationSearch &search,
+          std::vector<std::vector<int>> &sets) {
+    ++search.subsets_tried;
+    ModelPair told = told_models(models, search.differences, chosen);
+    auto v = validate::validate_plan(told.human_domain, told.human_problem, robot_plan);
+    PlanOutcome best = solve_model(told.human_domain, told.human_problem, planner, deadline);
+    ++search.planner_checks;
+    if (best.status == PlanStatus::LIMIT)
+        return Told::LIMIT;
+    if (best.status == PlanStatus::SOLVED && v.valid && best.cost == v.cost)
+        return Told::FOUND;
+    if (best.status == PlanStatus::SOLVED && v.valid && best.cost < v.cost)
+        planner.remember_cheaper_plan(robot_plan, best.plan);
+    std::vector<int> hit = breaking_alone(models, search, candidates, best.plan);
+    if (hit.empty())
+        return Told::NONE;
+    sets.push_back(std::move(hit));
+    return Told::NEW_SET;
+}
+
+// After E failed: tell E with every element of the sets just found as well, until no cheaper
+// plan is left. Each plan found there survives E and the sets before it, so its set shares
+// no element with them outside E: several sets per hitting-set round instead of one, and the
+// disjoint-sets bound of least_hitting_set rises as fast as the answer. One plan is cheap on
+// a floor; a hitting set of dozens of sight lines is not. NEW_SET when the sets grew (always,
+// unless the deadline passed or a plan had an empty set).
+template <class Tell>
+Told more_disjoint_sets(const std::vector<int> &chosen, Tell &told,
+                        std::vector<std::vector<int>> &sets) {
+    std::vector<int> more = chosen;
+    for (;;) {
+        more.insert(more.end(), sets.back().begin(), sets.back().end());
+        Told answer = told(more);
+        if (answer == Told::FOUND)
+            return Told::NEW_SET;
+        if (answer != Told::NEW_SET)
+            return answer;
+    }
+}
+
 } // namespace
 
 void hitting_set_explanation(const ModelPair &models, const std::vector<std::string> &robot_plan,
@@ -254,31 +301,33 @@ void hitting_set_explanation(const ModelPair &models, const std::vector<std::str
         search.status = ExplanationStatus::NONE;
         return;
     }
+    auto told = [&](const std::vector<int> &chosen) {
+        return tell(models, robot_plan, chosen, candidates, planner, deadline, search, sets);
+    };
     int floor = 0;
     while (!deadline.expired()) {
         // The sets only grow, so the last least hitting set's size bounds the next one's.
-        std::vector<int> chosen = least_hitting_set(sets, n, floor);
+        // Any least hitting set serves until one is an explanation: only then is the
+        // lexicographically least one sought (the costly part), and told in its turn.
+        std::vector<int> chosen = some_least_hitting_set(sets, n, floor);
         floor = static_cast<int>(chosen.size());
-        ++search.subsets_tried;
-        ModelPair told = told_models(models, search.differences, chosen);
-        auto v = validate::validate_plan(told.human_domain, told.human_problem, robot_plan);
-        PlanOutcome best = solve_model(told.human_domain, told.human_problem, planner, deadline);
-        ++search.planner_checks;
-        if (best.status == PlanStatus::LIMIT)
+        Told answer = told(chosen);
+        if (answer == Told::FOUND) {
+            std::vector<int> least = least_hitting_set(sets, n, floor);
+            answer = least == chosen ? Told::FOUND : told(least);
+            chosen = std::move(least);
+        }
+        if (answer == Told::NEW_SET)
+            answer = more_disjoint_sets(chosen, told, sets);
+        if (answer == Told::LIMIT)
             return;
-        if (best.status == PlanStatus::SOLVED && v.valid && best.cost == v.cost) {
-            search.status = ExplanationStatus::FOUND;
-            search.chosen = chosen;
+        if (answer != Told::NEW_SET) {
+            search.status =
+                answer == Told::FOUND ? ExplanationStatus::FOUND : ExplanationStatus::NONE;
+            if (answer == Told::FOUND)
+                search.chosen = chosen;
             return;
         }
-        if (best.status == PlanStatus::SOLVED && v.valid && best.cost < v.cost)
-            planner.remember_cheaper_plan(robot_plan, best.plan);
-        std::vector<int> hit = breaking_alone(models, search, candidates, best.plan);
-        if (hit.empty()) {
-            search.status = ExplanationStatus::NONE;
-            return;
-        }
-        sets.push_back(std::move(hit));
     }
 }
 

@@ -19,18 +19,21 @@
 //     differences that break pi_R alone are never candidates;
 //   - a plan pi' of P_H + E cheaper than pi_R is a plan of P_H + E* unless E* holds some d that
 //     breaks pi' alone: every explanation hits T(pi') = {d : pi' invalid in P_H + {d}}.
-// The search: E = a least hitting set of the sets T found so far (exact; ties: see
-// least_hitting_set); plan P_H + E; if its optimum equals c(pi_R), E is
-// minimal (every explanation hits every T, and E is a least such set); else T(pi'), of the
-// plan found, is a new set E does not hit (pi' is valid in P_H + E), so the loop ends. T(pi')
-// empty: no explanation exists.
+// The search: E = a least hitting set of the sets T found so far (exact); plan P_H + E; if
+// its optimum equals c(pi_R), E is minimal (every explanation hits every T, and E is a least
+// such set); else T(pi'), of the plan found, is a new set E does not hit (pi' is valid in
+// P_H + E), so the loop ends. T(pi') empty: no explanation exists.
 // Any plan of P_H cheaper than pi_R gives such a T, wherever it was met: the search starts
 // from the sets of the plans earlier searches met (other designs of the same task, whose
-// human models differ: PlanCache::cheaper_plans), so one planner call often ends it. E is a
-// minimal explanation (it hits every T of every cheaper plan, and every minimal explanation is
-// among the least hitting sets of the sets known), and the lexicographically least one: every
-// minimal explanation is a least hitting set of the sets known, and least_hitting_set takes
-// the lexicographically least of those. So E does not depend on which plans were met before.
+// human models differ: PlanCache::cheaper_plans), so one planner call often ends it.
+// Ties: once some least hitting set E explains, the lexicographically least one L of the same
+// sets is told as well (when it differs); if it explains, it is the answer, else its plan's T
+// joins the sets and the loop goes on. L is then the lexicographically least minimal
+// explanation: every explanation hits every T known, so none is smaller than E, and every
+// minimal one is a least hitting set of the sets known, of which L is the least. So E does not
+// depend on which plans were met before, nor on which least hitting sets the rounds before
+// the last tried (finding the lexicographically least one costs up to an order of magnitude
+// more than finding one, and the rounds on a floor's sight lines number hundreds).
 
 #include "design/evaluation/plan_cache.h"
 #include "design/reconciliation/explanation_search.h"
@@ -47,6 +50,11 @@ bool all_restricting(const ModelPair &models, const std::vector<ModelDifference>
 // of some of `sets` has it), else 0; it saves proving the smaller sizes empty.
 std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, int size,
                                    int at_least = 0);
+
+// A least subset of `sets` hitting all of them, ascending, not necessarily the
+// lexicographically least: faster, for the rounds before the last.
+std::vector<int> some_least_hitting_set(const std::vector<std::vector<int>> &sets, int size,
+                                        int at_least = 0);
 
 // minimal_explanation's search when all_restricting(models, search.differences) holds.
 void hitting_set_explanation(const ModelPair &models, const std::vector<std::string> &robot_plan,

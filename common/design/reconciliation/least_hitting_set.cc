@@ -26,10 +26,18 @@ public:
         std::sort(by_size_.begin(), by_size_.end());
     }
 
-    std::vector<int> solve(int at_least) {
+    // A least hitting set, ascending: the first the search meets.
+    std::vector<int> any_least(int at_least) {
         int k = std::max(at_least, disjoint_open(static_cast<int>(of_.size())));
         while (!search(k))
             ++k;
+        std::vector<int> out = found_;
+        std::sort(out.begin(), out.end());
+        return out;
+    }
+
+    std::vector<int> solve(int at_least) {
+        any_least(at_least);
         // `best`: a least hitting set whose first elements are `answer` (the last one found);
         // its next element needs no search, only the lesser ones do.
         std::vector<int> best = found_, answer;
@@ -138,6 +146,16 @@ private:
 };
 
 } // namespace
+
+std::vector<int> some_least_hitting_set(const std::vector<std::vector<int>> &sets, int size,
+                                        int at_least) {
+    for (const auto &s : sets)
+        if (s.empty())
+            return {};
+    if (sets.empty())
+        return {};
+    return LexLeastHitting(sets, size).any_least(at_least);
+}
 
 std::vector<int> least_hitting_set(const std::vector<std::vector<int>> &sets, int size,
                                    int at_least) {
