@@ -13,8 +13,11 @@ namespace envdesign::design::witness {
 ExplanationBound::ExplanationBound(const DesignProblem &problem, const TouchIndex &index,
                                    const std::vector<Record> &root)
     : index_(index) {
-    for (int m = 0; m < index.size(); ++m)
+    for (int m = 0; m < index.size(); ++m) {
         every_.push_back(m);
+        if (index.of(m).edits_robot)
+            robot_ways_.push_back(m);
+    }
     for (int t = 0; t < static_cast<int>(problem.tasks.size()); ++t) {
         Task task;
         const Record &r = t < static_cast<int>(root.size()) ? root[t] : nullptr;

@@ -1,8 +1,9 @@
 #pragma once
 // The hitting-set phase's lower bound on the explaining robot's other option (robot_behaviour
 // EXPLAINING, explaining.h), where every modification restricts and edits only the human's
-// model. Then the robot's model, and so its optimal plan pi_R (the planner's, deterministic),
-// are the same in every design S, and explaining task t costs at least
+// model, or adds plans to the robot's alone (below). In a design S holding none of the
+// latter, the robot's model, and so its optimal plan pi_R (the planner's, deterministic), are
+// the empty design's, and explaining task t costs at least
 //     H * p_t * x * |E_t(S)|        (above the least IE and c_R*, which acting costs too).
 // E_t(S) makes pi_R optimal in P_H(S) + E, and telling people a difference never makes an
 // action cheaper, so every plan of P_H(S) cheaper than pi_R's human cost h_R must be broken by
@@ -17,6 +18,11 @@
 // at least the least number of the empty design's differences that, with the touching
 // modifications S holds, hit every such P: a second hitting set inside the phase's program
 // (hitting_set.h). docs/design-search.md.
+// Modifications that add plans to the robot's model alone (a lane) change pi_R, h_R and the
+// differences in the designs that hold them; there the explaining option keeps only what
+// every option pays (the constant and the robot's floor), and each row above is relaxed by
+// any such modification chosen (`robot_ways`). Where none is chosen the robot's model is the
+// empty design's and the argument above holds as it stands.
 
 #include "design/design_problem.h"
 #include "design/evaluation/plan_cache.h"
@@ -49,6 +55,8 @@ public:
         std::vector<int> modifications; // every restricting one that touches the plan
         std::vector<int> differences;   // of task t with no modification (indices)
     };
+    // The modifications that edit the robot's model (each adds plans: explaining_applies).
+    const std::vector<int> &robot_ways() const { return robot_ways_; }
     // What can break `plan`, a plan of task t's human model, in a design that keeps it.
     const Breakers &breaking(int t, const PooledPlan &plan) const;
 
@@ -74,6 +82,7 @@ private:
     PlanCache planner_{planning::PlannerOptions{}}; // explanation_plans' own searches
     const TouchIndex &index_;
     Configuration every_; // every modification
+    std::vector<int> robot_ways_;
     std::vector<Task> tasks_;
 };
 

@@ -266,7 +266,7 @@ void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vec
 // EXPLAINING (explanation_bound.h): binary z says the task explains, and returns it. Each
 // difference e_i of the empty design told costs H p x; every pooled plan cheaper than h_R
 // must be broken by the design or by one told: touching modifications + e_i over its
-// breaking differences >= z.
+// breaking differences >= z, unless the design gives the robot a new way (+ those x_m).
 int HittingSetMaster::add_explaining_option(Program &program, int t) const {
     int explains = program.column(0.0);
     const ExplanationBound &bound = *root_.explaining;
@@ -283,6 +283,8 @@ int HittingSetMaster::add_explaining_option(Program &program, int t) const {
         std::vector<int> cols{explains};
         std::vector<double> coefs{-1.0};
         for (int m : breakers.modifications)
+            cols.push_back(m), coefs.push_back(1.0);
+        for (int m : bound.robot_ways())
             cols.push_back(m), coefs.push_back(1.0);
         for (int i : breakers.differences) {
             if (told[i] < 0)

@@ -187,8 +187,8 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
             for (Side side : sides(edit.model)) {
                 EditClass e = classify_edit(edit, uses[side]);
                 index_edit(i, edit, side);
-                if (side == ROBOT && edit.kind != EditKind::ADD_PREDICATE)
-                    c.edits_robot = true;
+                if (edit.kind != EditKind::ADD_PREDICATE)
+                    (side == ROBOT ? c.edits_robot : c.edits_human) = true;
                 if (!e.restricting && side == ROBOT)
                     c.robot_restricting = false;
                 c.adding = c.adding && e.adding;

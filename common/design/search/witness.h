@@ -46,6 +46,7 @@ struct ModificationClass {
     bool restricting = true;       // every edit is restricting
     bool robot_restricting = true; // every edit of the robot's model is
     bool edits_robot = false;      // it edits the robot's model at all
+    bool edits_human = false;      // it edits the human's model at all
     // Every edit only adds plans and never makes one dearer, whatever else is added (the
     // mirror of the restricting rules: more atoms of a predicate nothing reads negatively,
     // fewer of one nothing reads positively, a precondition or goal removed). A new lane.

@@ -56,9 +56,9 @@ void raise_floor(Node &node, int t, const TaskExplicability &e) {
 void SupersetBound::learn(const Configuration &c, int t, const TaskExplicability &e) {
     if (e.status != ExplicabilityStatus::SOLVED || !e.human_plan || !e.human_optimal_cost)
         return;
-    std::vector<int> needs;
+    std::vector<int> needs; // what made the human's model hold them: not a robot-only edit
     for (int m : always_)
-        if (contains(c, m))
+        if (contains(c, m) && index_.of(m).edits_human)
             needs.push_back(m);
     auto keep = [&](const std::vector<std::string> &plan, double cost) {
         auto touching = index_.touching_human_plan(c, t, plan);

@@ -35,7 +35,8 @@ struct Node {
 };
 
 // A plan known to be valid in the human's model of some configuration xi: valid in every
-// configuration that keeps xi's everywhere-added modifications (`needs`) and adds none of
+// configuration that keeps xi's everywhere-added modifications that edit the human's model
+// (`needs`; a robot-only edit changes no plan of the human's model) and adds none of
 // `breakers` (the restricting ones that touch it, and the everywhere-added ones outside xi).
 // So the human's optimal cost there is at most `cost`.
 struct PooledPlan {
