@@ -306,9 +306,11 @@ public:
     // `restricting_only`: every modification restricting and of non-negative cost, and up
     // to 9 of them (the witness search's hitting-set phase applies). `adding_too`: the same
     // with modifications that add plans among them (the phase applies when each adds only).
-    explicit Generator(unsigned seed, bool restricting_only = false, bool adding_too = false)
+    // `robot_ways`: with `adding_too`, the adding kinds edit the robot's model alone (lanes).
+    explicit Generator(unsigned seed, bool restricting_only = false, bool adding_too = false,
+                       bool robot_ways = false)
         : seed_(seed), restricting_only_(restricting_only || adding_too), adding_too_(adding_too),
-          r_(seed) {}
+          robot_ways_(robot_ways), r_(seed) {}
 
     Generated run() {
         world();
@@ -661,6 +663,9 @@ private:
     std::optional<GeneratedModification> make(const std::string &kind) {
         GeneratedModification m;
         Target t = target();
+        if (robot_ways_ &&
+            std::find(ADDING_KINDS.begin(), ADDING_KINDS.end(), kind) != ADDING_KINDS.end())
+            t = Target::ROBOT;
         bool jump = all(t, [](const Side &s) { return s.jump; });
         auto schema = [&](const std::string &field, const std::vector<SchemaLiteral> &options,
                           const std::string &name) -> std::optional<GeneratedModification> {
@@ -912,6 +917,7 @@ private:
 
     unsigned seed_;
     bool restricting_only_;
+    bool robot_ways_;
     bool adding_too_;
     Random r_;
     Generated g_;
@@ -1271,6 +1277,51 @@ TEST(WitnessAgreement, CostOptimalBehavioursAgreeWithExhaustive) {
     EXPECT_GE(differs_from_explicable, seeds / 5);
     EXPECT_GE(proofs, seeds / 2);
     EXPECT_GE(non_empty_proofs, seeds / 10);
+}
+
+// COST_OPTIMAL and COST_OPTIMAL_BEST_CASE with lanes: restricting modifications beside ones
+// that add plans to the robot's model alone. The hitting-set phase takes them, a lane that may
+// bring optimal plans of its own dropping the floor (docs/design-search.md); the witness search
+// and its best-first search alone must agree with every subset.
+TEST(WitnessAgreement, CostOptimalWithLanesAgreesWithExhaustive) {
+    int seeds = seeds_from_environment();
+    int disagreements = 0, proofs_with_lanes = 0, lanes_chosen = 0;
+    for (const std::string behaviour : {"COST_OPTIMAL", "COST_OPTIMAL_BEST_CASE"}) {
+        for (int s = 0; s < seeds; ++s) {
+            unsigned seed = 400000u + static_cast<unsigned>(s);
+            Generated g = Generator(seed, false, true, true).run();
+            if (s % 3 != 0)
+                add_equal_cost_jumps(g, seed);
+            g.behaviour = behaviour;
+            fs::path dir = directory_for(seed);
+            fs::remove_all(dir);
+            fs::path spec = write_spec(g, dir, false);
+            DesignProblem problem = load_design_problem(spec.string());
+            TouchIndex index(problem);
+            auto lane = [&](int m) { return !index.of(m).restricting && index.of(m).adding; };
+            bool has_lane = false;
+            for (int m = 0; m < index.size(); ++m)
+                has_lane = has_lane || lane(m);
+            Answer exhaustive = search(problem, SearchMethod::EXHAUSTIVE);
+            Answer witness = search(problem, SearchMethod::WITNESS);
+            Answer best_first = search(problem, SearchMethod::WITNESS, false);
+            proofs_with_lanes += witness.hitting_set_proof && has_lane;
+            lanes_chosen += std::any_of(exhaustive.design.begin(), exhaustive.design.end(), lane);
+            if (!agree_all_three(seed, spec, witness, best_first, exhaustive)) {
+                ++disagreements;
+                ADD_FAILURE() << behaviour;
+                continue;
+            }
+            fs::remove_all(dir);
+        }
+    }
+    std::cout << "[ agreement ] cost-optimal behaviours with lanes: " << 2 * seeds << " problems, "
+              << disagreements << " disagreements; hitting-set proofs with lanes "
+              << proofs_with_lanes << ", best designs with a lane " << lanes_chosen << std::endl;
+    if (seeds < 40)
+        return;
+    EXPECT_GE(proofs_with_lanes, seeds / 2);
+    EXPECT_GE(lanes_chosen, seeds / 20);
 }
 
 // Problems whose modifications all restrict, up to 9 of them: the witness search proves

@@ -147,6 +147,12 @@ bool DesignLearner::only_adding_added_everywhere() const {
     });
 }
 
+// Whether every modification added everywhere is a new way for the robot alone (a lane).
+bool DesignLearner::only_robot_ways_added_everywhere() const {
+    return std::all_of(bound_.always().begin(), bound_.always().end(),
+                       [&](int m) { return index_.of(m).adding && !index_.of(m).edits_human; });
+}
+
 // The relaxation of hitting_set.h holds when every modification is restricting or adding,
 // of non-negative cost, the weights are non-negative and the empty design's objective is
 // finite (its floors are known). For EXPLICABLE robots the floors are floors on the most
@@ -156,7 +162,7 @@ bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
     const Behaviour &b = behaviour_of(w.behaviour);
     bool behaviour = b.takes_most_explicable_plan ||
-                     (b.runs_an_optimal_plan && bound_.always().empty()) ||
+                     (b.runs_an_optimal_plan && only_robot_ways_added_everywhere()) ||
                      explaining_applies(problem_, index_, options_);
     return options_.hitting_sets && behaviour && root_ && result_.best &&
            std::isfinite(result_.best->objective.value) && only_adding_added_everywhere() &&
@@ -180,15 +186,19 @@ bool explaining_applies(const DesignProblem &problem, const TouchIndex &index,
     return true;
 }
 
-// COST_OPTIMAL(_BEST_CASE), every modification restricting: per task, the modifications
+// COST_OPTIMAL(_BEST_CASE), every modification restricting or a lane: per task, the modifications
 // under which the empty design's worst (best) optimal plan's human cost is no floor. That
 // plan, pi_0, is a floor while it stays a robot plan: then it is still optimal (c_R* never
 // drops), so the worst case is at least its IE; for the best case c_R* is unchanged, so
 // the optimal plans are some of the empty design's, none cheaper for people than pi_0. Its
 // human cost only rises under restricting edits, and the human's optimum is bounded by the
 // pool as for EXPLICABLE robots. A modification that can break pi_0 as a robot plan drops
-// the floor, to nothing (docs/design-search.md).
-std::vector<std::vector<UseFloor>> DesignLearner::cost_optimal_floors() const {
+// the floor, to nothing (docs/design-search.md). So does a lane (adding, robot-only) whose
+// plans may cost no more than c_R* (addition_floors.h's robot floors): it may bring optimal
+// plans of its own. Any other lane leaves the optimal plans as they are: each of its plans
+// costs more than c_R*, which restricting edits never lower.
+std::vector<std::vector<UseFloor>>
+DesignLearner::cost_optimal_floors(const RootFacts &facts) const {
     std::vector<std::vector<UseFloor>> out(tasks_);
     for (int t = 0; t < tasks_; ++t) {
         const Record &r = root_->tasks[t];
@@ -196,8 +206,17 @@ std::vector<std::vector<UseFloor>> DesignLearner::cost_optimal_floors() const {
             continue;
         auto breakers = index_.touching_robot_plan({}, t, r->evaluation.plan);
         for (int m = 0; m < index_.size(); ++m)
-            if (breakers ? contains(*breakers, m) : index_.of(m).edits_robot)
+            if (index_.of(m).restricting &&
+                (breakers ? contains(*breakers, m) : index_.of(m).edits_robot))
                 out[t].push_back(UseFloor{m, -INF});
+        // A lane whose plans may cost no more than c_R* may bring optimal plans of its own.
+        for (int m : bound_.always()) {
+            const auto &lanes = facts.lower_robot_floors[t];
+            if (!facts.robot_bounds[t] ||
+                std::any_of(lanes.begin(), lanes.end(),
+                            [&](const UseFloor &f) { return f.modification == m; }))
+                out[t].push_back(UseFloor{m, -INF});
+        }
     }
     return out;
 }
@@ -214,9 +233,7 @@ std::optional<RootFacts> DesignLearner::root_facts() {
     }
     facts.lower_floors.resize(tasks_);
     facts.lower_robot_floors.resize(tasks_);
-    if (behaviour_of(problem_.weights.behaviour).runs_an_optimal_plan)
-        facts.lower_floors = cost_optimal_floors();
-    else if (!bound_.always().empty()) {
+    if (!bound_.always().empty()) {
         std::string why;
         auto floors = addition_floors(problem_, bound_.always(), facts.floor, facts.robot_bounds,
                                       options_.deadline, why);
@@ -232,6 +249,8 @@ std::optional<RootFacts> DesignLearner::root_facts() {
         facts.lower_floors = std::move(floors->below);
         facts.lower_robot_floors = std::move(floors->robot_below);
     }
+    if (behaviour_of(problem_.weights.behaviour).runs_an_optimal_plan)
+        facts.lower_floors = cost_optimal_floors(facts);
     const Behaviour &behaviour = behaviour_of(problem_.weights.behaviour);
     for (int t = 0; t < tasks_; ++t) {
         const Record &r = root_->tasks[t];

@@ -62,9 +62,10 @@ public:
 
 private:
     bool only_adding_added_everywhere() const;
+    bool only_robot_ways_added_everywhere() const;
     bool applies() const;
     std::optional<RootFacts> root_facts();
-    std::vector<std::vector<UseFloor>> cost_optimal_floors() const;
+    std::vector<std::vector<UseFloor>> cost_optimal_floors(const RootFacts &facts) const;
     // `inherit`: look for its tasks among smaller evaluated designs first.
     bool evaluate(const Configuration &design, bool inherit = true);
     std::optional<ConfigurationEvaluation> complete(const ConfigurationEvaluation &request);

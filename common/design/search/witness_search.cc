@@ -77,7 +77,8 @@ public:
                 "robot_behaviour " + std::string(behaviour_of(problem.weights.behaviour).name) +
                 ": the witnesses are the worst (best) optimal plan and, for a finite worst case, "
                 "every action of every optimal plan; the queue bounds the IE term by its least "
-                "value, and the hitting-set phase, where every modification restricts, by the "
+                "value, and the hitting-set phase, where every modification restricts or is a "
+                "lane for the robot alone, by the "
                 "empty design's worst (best) optimal plan while it stays a robot plan "
                 "(docs/design-search.md)");
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
