@@ -15,8 +15,8 @@ ExplanationBound::ExplanationBound(const DesignProblem &problem, const TouchInde
     : index_(index) {
     for (int m = 0; m < index.size(); ++m) {
         every_.push_back(m);
-        if (index.of(m).edits_robot)
-            robot_ways_.push_back(m);
+        if (index.of(m).edits_robot || !index.of(m).restricting)
+            relaxing_.push_back(m);
     }
     for (int t = 0; t < static_cast<int>(problem.tasks.size()); ++t) {
         Task task;

@@ -1,9 +1,9 @@
 #pragma once
 // The hitting-set phase's lower bound on the explaining robot's other option (robot_behaviour
-// EXPLAINING, explaining.h), where every modification restricts and edits only the human's
-// model, or adds plans to the robot's alone (below). In a design S holding none of the
-// latter, the robot's model, and so its optimal plan pi_R (the planner's, deterministic), are
-// the empty design's, and explaining task t costs at least
+// EXPLAINING, explaining.h), where every modification restricts or adds plans. In a design S
+// whose modifications all restrict and edit only the human's model (a barrier seen only by
+// people, a tape), the robot's model, and so its optimal plan pi_R (the planner's,
+// deterministic), are the empty design's, and explaining task t costs at least
 //     H * p_t * x * |E_t(S)|        (above the least IE and c_R*, which acting costs too).
 // E_t(S) makes pi_R optimal in P_H(S) + E, and telling people a difference never makes an
 // action cheaper, so every plan of P_H(S) cheaper than pi_R's human cost h_R must be broken by
@@ -18,11 +18,15 @@
 // at least the least number of the empty design's differences that, with the touching
 // modifications S holds, hit every such P: a second hitting set inside the phase's program
 // (hitting_set.h). docs/design-search.md.
-// Modifications that add plans to the robot's model alone (a lane) change pi_R, h_R and the
-// differences in the designs that hold them; there the explaining option keeps only what
-// every option pays (the constant and the robot's floor), and each row above is relaxed by
-// any such modification chosen (`robot_ways`). Where none is chosen the robot's model is the
-// empty design's and the argument above holds as it stands.
+// Any other modification (`relaxing`) voids the argument in the designs that hold it: one
+// that edits the robot's model (a lane, a physical barrier) may change pi_R and h_R (even a
+// restricting one: the planner may then return another optimal plan), and one that adds
+// plans to the human's model may add a difference that breaks P (an initial atom people
+// are told of that the robot lacks) and makes pooled plans that need it. There the
+// explaining option keeps only what every option pays (the constant and the robot's floor):
+// each row above is relaxed by any such modification chosen, and pooled plans that need an
+// addition get no row (they are plans only where it is chosen). Where none is chosen the
+// argument holds as it stands.
 
 #include "design/design_problem.h"
 #include "design/evaluation/plan_cache.h"
@@ -55,8 +59,9 @@ public:
         std::vector<int> modifications; // every restricting one that touches the plan
         std::vector<int> differences;   // of task t with no modification (indices)
     };
-    // The modifications that edit the robot's model (each adds plans: explaining_applies).
-    const std::vector<int> &robot_ways() const { return robot_ways_; }
+    // The modifications that edit the robot's model or add plans: the bound does not hold
+    // in a design that holds one.
+    const std::vector<int> &relaxing() const { return relaxing_; }
     // What can break `plan`, a plan of task t's human model, in a design that keeps it.
     const Breakers &breaking(int t, const PooledPlan &plan) const;
 
@@ -82,7 +87,7 @@ private:
     PlanCache planner_{planning::PlannerOptions{}}; // explanation_plans' own searches
     const TouchIndex &index_;
     Configuration every_; // every modification
-    std::vector<int> robot_ways_;
+    std::vector<int> relaxing_;
     std::vector<Task> tasks_;
 };
 

@@ -266,7 +266,8 @@ void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vec
 // EXPLAINING (explanation_bound.h): binary z says the task explains, and returns it. Each
 // difference e_i of the empty design told costs H p x; every pooled plan cheaper than h_R
 // must be broken by the design or by one told: touching modifications + e_i over its
-// breaking differences >= z, unless the design gives the robot a new way (+ those x_m).
+// breaking differences >= z, unless the design holds a modification that voids the argument
+// (+ those x_m: explanation_bound.h).
 int HittingSetMaster::add_explaining_option(Program &program, int t) const {
     int explains = program.column(0.0);
     const ExplanationBound &bound = *root_.explaining;
@@ -279,12 +280,15 @@ int HittingSetMaster::add_explaining_option(Program &program, int t) const {
     for (const PooledPlan &plan : plans_.plans(t)) {
         if (plan.cost >= *robot_plan)
             break;
+        if (!plan.needs.empty())
+            continue; // a plan only where an addition is chosen, and there nothing binds
+
         const ExplanationBound::Breakers &breakers = bound.breaking(t, plan);
         std::vector<int> cols{explains};
         std::vector<double> coefs{-1.0};
         for (int m : breakers.modifications)
             cols.push_back(m), coefs.push_back(1.0);
-        for (int m : bound.robot_ways())
+        for (int m : bound.relaxing())
             cols.push_back(m), coefs.push_back(1.0);
         for (int i : breakers.differences) {
             if (told[i] < 0)

@@ -175,14 +175,10 @@ bool explaining_applies(const DesignProblem &problem, const TouchIndex &index,
     if (!behaviour_of(problem.weights.behaviour).may_explain || !options.hitting_sets ||
         options.ranking > 1)
         return false;
-    for (int m = 0; m < index.size(); ++m) {
-        const ModificationClass &c = index.of(m);
-        bool tells_people = c.restricting && !c.edits_robot; // a barrier, a tape
-        bool robot_way = c.adding && !c.edits_human;         // a lane
-        if (!(tells_people || robot_way) ||
+    for (int m = 0; m < index.size(); ++m)
+        if (!(index.of(m).restricting || index.of(m).adding) ||
             problem.weights.beta * problem.modifications[m].cost < 0)
             return false;
-    }
     return true;
 }
 

@@ -31,9 +31,8 @@ void offer_cone_of(const DesignProblem &problem, const SupersetBound &bound,
                    Ranking &ranking);
 
 // robot_behaviour EXPLAINING: whether the hitting-set phase applies (explanation_bound.h):
-// every modification either restricts and edits only the human's model (a barrier, a tape)
-// or adds plans and edits only the robot's (a lane), costs no less than nothing, and at
-// most one design is asked for.
+// every modification restricts or adds plans and costs no less than nothing, and at most
+// one design is asked for.
 bool explaining_applies(const DesignProblem &problem, const TouchIndex &index,
                         const DesignSearchOptions &options);
 
