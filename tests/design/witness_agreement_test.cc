@@ -917,8 +917,8 @@ private:
 
     unsigned seed_;
     bool restricting_only_;
-    bool robot_ways_;
     bool adding_too_;
+    bool robot_ways_;
     Random r_;
     Generated g_;
     int isolated_robot_ = -1, isolated_human_ = -1;

@@ -264,17 +264,27 @@ Told tell(const ModelPair &models, const std::vector<std::string> &robot_plan,
 }
 
 // After E failed: tell E with every element of the sets just found as well, until no cheaper
-// plan is left. Each plan found there survives E and the sets before it, so its set shares
-// no element with them outside E: several sets per hitting-set round instead of one, and the
-// disjoint-sets bound of least_hitting_set rises as fast as the answer. One plan is cheap on
-// a floor; a hitting set of dozens of sight lines is not. NEW_SET when the sets grew (always,
-// unless the deadline passed or a plan had an empty set).
+// plan is left. Each plan found there is valid with E and those sets told, so none of their
+// elements breaks it alone (validity is closed under union): its set is disjoint from E and
+// from each of them. Several sets per hitting-set round instead of one, and the disjoint-sets
+// bound of least_hitting_set rises as fast as the answer. One plan is cheap on a floor; a
+// hitting set of dozens of sight lines is not. NEW_SET when the sets grew (always, unless the
+// deadline passed or a plan had an empty set). `more` grows by at least one element a step,
+// so at most `size` steps; a set that met it would break that argument, and ends the pass.
 template <class Tell>
 Told more_disjoint_sets(const std::vector<int> &chosen, Tell &told,
-                        std::vector<std::vector<int>> &sets) {
+                        std::vector<std::vector<int>> &sets, int size) {
+    std::vector<bool> told_already(size, false);
+    for (int d : chosen)
+        told_already[d] = true;
     std::vector<int> more = chosen;
     for (;;) {
-        more.insert(more.end(), sets.back().begin(), sets.back().end());
+        for (int d : sets.back()) {
+            if (told_already[d])
+                return Told::NEW_SET;
+            told_already[d] = true;
+            more.push_back(d);
+        }
         Told answer = told(more);
         if (answer == Told::FOUND)
             return Told::NEW_SET;
@@ -318,7 +328,7 @@ void hitting_set_explanation(const ModelPair &models, const std::vector<std::str
             chosen = std::move(least);
         }
         if (answer == Told::NEW_SET)
-            answer = more_disjoint_sets(chosen, told, sets);
+            answer = more_disjoint_sets(chosen, told, sets, n);
         if (answer == Told::LIMIT)
             return;
         if (answer != Told::NEW_SET) {

@@ -30,8 +30,8 @@
 // sets is told as well (when it differs); if it explains, it is the answer, else its plan's T
 // joins the sets and the loop goes on. L is then the lexicographically least minimal
 // explanation: every explanation hits every T known, so none is smaller than E, and every
-// minimal one is a least hitting set of the sets known, of which L is the least. So E does not
-// depend on which plans were met before, nor on which least hitting sets the rounds before
+// minimal one is a least hitting set of the sets known, of which L is the least. So the answer
+// does not depend on which plans were met before, nor on which least hitting sets the rounds before
 // the last tried (finding the lexicographically least one costs up to an order of magnitude
 // more than finding one, and the rounds on a floor's sight lines number hundreds).
 

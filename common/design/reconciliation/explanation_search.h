@@ -18,7 +18,7 @@ struct ExplanationSearch {
     ExplanationStatus status = ExplanationStatus::LIMIT;
     std::vector<ModelDifference> differences; // all candidates
     std::vector<int> chosen;                  // indices into `differences`, ascending
-    long long subsets_tried = 0;
+    long long subsets_tried = 0;  // told the human (with hitting sets: the rounds' sets too)
     long long planner_checks = 0; // subsets on which pi_R was valid, so the planner ran
     bool hitting_sets = false;    // found by explanation_hitting.h (all differences restricting)
 };

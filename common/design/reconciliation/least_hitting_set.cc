@@ -6,13 +6,13 @@ namespace envdesign::design {
 namespace {
 
 // least_hitting_set: the lexicographically least of the least hitting sets, so that an
-// explanation does not depend on which plans earlier searches met (explanation_hitting.h).
-// First the least size k: a depth-first search with a limit k = a lower bound, k+1, ...
-// that branches on the smallest set not hit yet. Then the answer element by element: the
-// least element e such that some hitting set of size k holds the elements fixed so far, e,
-// and otherwise only elements above e; each such question is the same search, with the
-// elements at or below e barred. A node is given up when more sets not hit yet are pairwise
-// disjoint in their allowed elements than elements are left to choose (each needs one of
+// explanation does not depend on which plans earlier searches met (explanation_hitting.h);
+// some_least_hitting_set stops after the first step. First the least size k: a depth-first search
+// with a limit k = a lower bound, k+1, ... that branches on the smallest set not hit yet. Then the
+// answer element by element: the least element e such that some hitting set of size k holds the
+// elements fixed so far, e, and otherwise only elements above e; each such question is the same
+// search, with the elements at or below e barred. A node is given up when more sets not hit yet are
+// pairwise disjoint in their allowed elements than elements are left to choose (each needs one of
 // its own), or when a set not hit yet has no allowed element.
 class LexLeastHitting {
 public:

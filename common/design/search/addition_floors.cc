@@ -354,7 +354,8 @@ std::optional<AdditionFloors> addition_floors(const DesignProblem &problem,
                   e.what();
             return std::nullopt;
         }
-        bool ok = model_floors(problem, adding, compiled->domain, compiled->problem, in_compilation,
+        bool ok = floor[t] == -INF || // no floor asked for: nothing is below it
+                  model_floors(problem, adding, compiled->domain, compiled->problem, in_compilation,
                                floor[t], deadline, out.below[t], out.searches, why);
         if (ok && robot_floor[t])
             ok = model_floors(problem, adding, models.robot_domain, models.robot_problem,

@@ -56,9 +56,9 @@ struct AdditionFloors {
 };
 
 // L(t, e) for every task of positive probability and every modification in `adding`
-// (ascending, each ModificationClass::adding), kept where it is at most `floor[t]`, and
-// the robot's where `robot_floor[t]` is known. nullopt, with `why`, when a model does not
-// ground or the deadline passes first.
+// (ascending, each ModificationClass::adding), kept where it is at most `floor[t]` (none
+// searched where that is -INF), and the robot's where `robot_floor[t]` is known. nullopt, with
+// `why`, when a model does not ground or the deadline passes first.
 std::optional<AdditionFloors> addition_floors(const DesignProblem &problem,
                                               const std::vector<int> &adding,
                                               const std::vector<double> &floor,

@@ -267,8 +267,8 @@ void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vec
 // difference e_i of the empty design told costs H p x; every pooled plan cheaper than h_R
 // must be broken by the design or by one told: touching modifications + e_i over its
 // breaking differences >= z, unless the design holds a modification that voids the argument
-// (+ those x_m: explanation_bound.h).
-int HittingSetMaster::add_explaining_option(Program &program, int t) const {
+// (+ `voided`, at most the sum of those x_m: explanation_bound.h).
+int HittingSetMaster::add_explaining_option(Program &program, int t, int voided) const {
     int explains = program.column(0.0);
     const ExplanationBound &bound = *root_.explaining;
     std::optional<double> robot_plan = bound.robot_plan_cost(t);
@@ -282,14 +282,13 @@ int HittingSetMaster::add_explaining_option(Program &program, int t) const {
             break;
         if (!plan.needs.empty())
             continue; // a plan only where an addition is chosen, and there nothing binds
-
         const ExplanationBound::Breakers &breakers = bound.breaking(t, plan);
         std::vector<int> cols{explains};
         std::vector<double> coefs{-1.0};
         for (int m : breakers.modifications)
             cols.push_back(m), coefs.push_back(1.0);
-        for (int m : bound.relaxing())
-            cols.push_back(m), coefs.push_back(1.0);
+        if (voided >= 0)
+            cols.push_back(voided), coefs.push_back(1.0);
         for (int i : breakers.differences) {
             if (told[i] < 0)
                 told[i] = program.column(each);
@@ -298,6 +297,22 @@ int HittingSetMaster::add_explaining_option(Program &program, int t) const {
         program.row(cols, coefs, 'G', 0.0);
     }
     return explains;
+}
+
+// EXPLAINING: a column at most the number of chosen modifications that void the explaining
+// bound (explanation_bound.h), shared by every task's rows (one entry per row instead of one
+// per such modification); -1 when there is none.
+int HittingSetMaster::add_voided_column(Program &program) const {
+    const std::vector<int> &relaxing = root_.explaining->relaxing();
+    if (relaxing.empty())
+        return -1;
+    int voided = program.column(0.0, 1.0, false);
+    std::vector<int> cols{voided};
+    std::vector<double> coefs{1.0};
+    for (int m : relaxing)
+        cols.push_back(m), coefs.push_back(-1.0);
+    program.row(cols, coefs, 'L', 0.0);
+    return voided;
 }
 
 // A task whose robot floor c_R* falls when adding modifications are chosen: the constant
@@ -368,13 +383,15 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
     // terms there keeps the program's numbers small and changes no design below it.
     double cap = std::max(0.0, cutoff - constant_) + 1.0;
     double offset = constant_;
+    int voided = root_.explaining ? add_voided_column(program) : -1;
     for (int t = 0; t < static_cast<int>(problem_.tasks.size()); ++t) {
         add_falling_robot_floor(program, t);
         std::vector<Level> task_levels = levels(t);
         if (task_levels.empty())
             continue;
         if (root_.explaining)
-            add_falling_floor(program, t, task_levels, cap, add_explaining_option(program, t));
+            add_falling_floor(program, t, task_levels, cap,
+                              add_explaining_option(program, t, voided));
         else if (root_.lower_floors[t].empty())
             offset += add_fixed_floor(program, task_levels, cap);
         else

@@ -99,7 +99,8 @@ private:
     double add_fixed_floor(Program &program, const std::vector<Level> &levels, double cap) const;
     void add_falling_floor(Program &program, int task, const std::vector<Level> &levels, double cap,
                            int explains = -1) const;
-    int add_explaining_option(Program &program, int task) const;
+    int add_explaining_option(Program &program, int task, int voided) const;
+    int add_voided_column(Program &program) const;
     std::vector<int> add_plan_levels(Program &program, const std::vector<Level> &levels,
                                      const std::vector<double> &objective) const;
     void add_falling_robot_floor(Program &program, int task) const;

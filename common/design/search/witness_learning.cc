@@ -147,8 +147,9 @@ bool DesignLearner::only_adding_added_everywhere() const {
     });
 }
 
-// Whether every modification added everywhere is a new way for the robot alone (a lane).
-bool DesignLearner::only_robot_ways_added_everywhere() const {
+// Whether every modification added everywhere is a lane: it adds plans to the robot's model
+// alone.
+bool DesignLearner::only_lanes_added_everywhere() const {
     return std::all_of(bound_.always().begin(), bound_.always().end(),
                        [&](int m) { return index_.of(m).adding && !index_.of(m).edits_human; });
 }
@@ -157,12 +158,12 @@ bool DesignLearner::only_robot_ways_added_everywhere() const {
 // of non-negative cost, the weights are non-negative and the empty design's objective is
 // finite (its floors are known). For EXPLICABLE robots the floors are floors on the most
 // explicable plan's human cost; for COST_OPTIMAL(_BEST_CASE) robots on the worst (best)
-// optimal plan's, with restricting modifications only (cost_optimal_floors).
+// optimal plan's, with restricting modifications and lanes only (cost_optimal_floors).
 bool DesignLearner::applies() const {
     const ObjectiveWeights &w = problem_.weights;
     const Behaviour &b = behaviour_of(w.behaviour);
     bool behaviour = b.takes_most_explicable_plan ||
-                     (b.runs_an_optimal_plan && only_robot_ways_added_everywhere()) ||
+                     (b.runs_an_optimal_plan && only_lanes_added_everywhere()) ||
                      explaining_applies(problem_, index_, options_);
     return options_.hitting_sets && behaviour && root_ && result_.best &&
            std::isfinite(result_.best->objective.value) && only_adding_added_everywhere() &&
@@ -184,15 +185,15 @@ bool explaining_applies(const DesignProblem &problem, const TouchIndex &index,
 
 // COST_OPTIMAL(_BEST_CASE), every modification restricting or a lane: per task, the modifications
 // under which the empty design's worst (best) optimal plan's human cost is no floor. That
-// plan, pi_0, is a floor while it stays a robot plan: then it is still optimal (c_R* never
-// drops), so the worst case is at least its IE; for the best case c_R* is unchanged, so
-// the optimal plans are some of the empty design's, none cheaper for people than pi_0. Its
-// human cost only rises under restricting edits, and the human's optimum is bounded by the
-// pool as for EXPLICABLE robots. A modification that can break pi_0 as a robot plan drops
-// the floor, to nothing (docs/design-search.md). So does a lane (adding, robot-only) whose
-// plans may cost no more than c_R* (addition_floors.h's robot floors): it may bring optimal
-// plans of its own. Any other lane leaves the optimal plans as they are: each of its plans
-// costs more than c_R*, which restricting edits never lower.
+// plan, pi_0, is a floor while it stays a robot plan and no lane below lowers c_R*: then it is
+// still optimal (c_R* does not drop), so the worst case is at least its IE; for the best case c_R*
+// is unchanged, so the optimal plans are some of the empty design's, none cheaper for people than
+// pi_0. Its human cost only rises under restricting edits, and the human's optimum is bounded by
+// the pool as for EXPLICABLE robots. A modification that can break pi_0 as a robot plan drops the
+// floor, to nothing (docs/design-search.md). So does a lane (adding, robot-only) whose plans may
+// cost no more than c_R* (addition_floors.h's robot floors): it may bring optimal plans of its own.
+// Any other lane leaves the optimal plans as they are: each of its plans costs more than c_R*,
+// which restricting edits never lower.
 std::vector<std::vector<UseFloor>>
 DesignLearner::cost_optimal_floors(const RootFacts &facts) const {
     std::vector<std::vector<UseFloor>> out(tasks_);
@@ -221,17 +222,25 @@ DesignLearner::cost_optimal_floors(const RootFacts &facts) const {
 // modifications can bring (addition_floors.h); nullopt when those cannot be computed.
 std::optional<RootFacts> DesignLearner::root_facts() {
     RootFacts facts;
+    bool optimal_plan = behaviour_of(problem_.weights.behaviour).runs_an_optimal_plan;
     // Every modification is restricting or adding (applies()): the root's c_R* is a floor
     // on the robot's cost except where an adding one lowers it (addition_floors.h).
     for (int t = 0; t < tasks_; ++t) {
         facts.floor.push_back(result_.baseline->tasks[t].human_plan_cost);
-        facts.robot_bounds.push_back(root_->robot_bounds[t]);
+        std::optional<double> robot = root_->robot_bounds[t];
+        const Record &r = root_->tasks[t];
+        // Without kappa no bound is asked for; an optimal plan's cost is c_R* all the same.
+        if (!robot && optimal_plan && r && r->evaluation.status == ExplicabilityStatus::SOLVED)
+            robot = r->evaluation.robot_cost;
+        facts.robot_bounds.push_back(robot);
     }
     facts.lower_floors.resize(tasks_);
     facts.lower_robot_floors.resize(tasks_);
     if (!bound_.always().empty()) {
         std::string why;
-        auto floors = addition_floors(problem_, bound_.always(), facts.floor, facts.robot_bounds,
+        // COST_OPTIMAL(_BEST_CASE) reads only the robot's floors (cost_optimal_floors).
+        std::vector<double> floor = optimal_plan ? std::vector<double>(tasks_, -INF) : facts.floor;
+        auto floors = addition_floors(problem_, bound_.always(), floor, facts.robot_bounds,
                                       options_.deadline, why);
         if (!floors) {
             result_.notes.push_back("the hitting-set phase was not used: " + why);
@@ -245,7 +254,7 @@ std::optional<RootFacts> DesignLearner::root_facts() {
         facts.lower_floors = std::move(floors->below);
         facts.lower_robot_floors = std::move(floors->robot_below);
     }
-    if (behaviour_of(problem_.weights.behaviour).runs_an_optimal_plan)
+    if (optimal_plan)
         facts.lower_floors = cost_optimal_floors(facts);
     const Behaviour &behaviour = behaviour_of(problem_.weights.behaviour);
     for (int t = 0; t < tasks_; ++t) {
@@ -273,6 +282,7 @@ bool DesignLearner::prove_by_hitting_sets() {
     if (!facts)
         return false;
     HittingSetMaster master(problem_, bound_, std::move(*facts), options_.max_design_size);
+    learn_explanation_plans({}, root_->tasks); // the root was evaluated before the phase
     // Designs the evaluator answers without planning (stored from earlier searches of the
     // same models) teach their plans first, so a re-design after drift plans little.
     std::set<Configuration> seen;
@@ -312,7 +322,7 @@ bool DesignLearner::prove_by_hitting_sets() {
         lower_bound_ = std::min(best, answer.bound);
         if (!evaluate(answer.design))
             return false;
-        learn_explanation_plans(answer.design);
+        learn_explanation_plans(answer.design, known_.back().second);
         ++designs_;
         ++result_.counters.configurations_evaluated;
     }
@@ -321,10 +331,10 @@ bool DesignLearner::prove_by_hitting_sets() {
 
 // EXPLAINING: pools the human plans the design's explanations meet (explanation_bound.h),
 // which tighten the explaining option's bound on every design that keeps them.
-void DesignLearner::learn_explanation_plans(const Configuration &design) {
+void DesignLearner::learn_explanation_plans(const Configuration &design,
+                                            const std::vector<Record> &records) {
     if (!explaining_)
         return;
-    const std::vector<Record> &records = known_.back().second;
     for (int t = 0; t < tasks_; ++t) {
         if (!records[t] || records[t]->evaluation.status != ExplicabilityStatus::SOLVED ||
             !records[t]->evaluation.explanation)

@@ -61,7 +61,7 @@ public:
 
 private:
     bool only_adding_added_everywhere() const;
-    bool only_robot_ways_added_everywhere() const;
+    bool only_lanes_added_everywhere() const;
     bool applies() const;
     std::optional<RootFacts> root_facts();
     std::vector<std::vector<UseFloor>> cost_optimal_floors(const RootFacts &facts) const;
@@ -73,7 +73,7 @@ private:
     std::optional<std::vector<double>> probe(const Configuration &design,
                                              const std::vector<int> &tasks);
     Record inherited(const Configuration &design, int task) const;
-    void learn_explanation_plans(const Configuration &design);
+    void learn_explanation_plans(const Configuration &design, const std::vector<Record> &records);
     void note_explanation_plans();
 
     const DesignProblem &problem_;
