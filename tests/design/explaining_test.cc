@@ -302,6 +302,12 @@ RankedDesign every_configuration(const DesignProblem &p, int &explained) {
     return best;
 }
 
+bool proven_by_the_phase(const DesignResult &r) {
+    return std::any_of(r.notes.begin(), r.notes.end(), [](const std::string &n) {
+        return n.find("proven optimal by the hitting-set phase") != std::string::npos;
+    });
+}
+
 // Modifications of every kind here (closing and opening passages for both models too): where
 // each restricts or adds plans the witness search is the hitting-set phase, its explaining
 // rows relaxed by the modifications that void their argument (explanation_bound.h).
@@ -318,9 +324,7 @@ TEST(ExplainingSearch, WitnessAndExhaustiveAgreeWithEveryConfiguration) {
             EXPECT_EQ(r.best->ranked.configuration, expected.configuration);
             EXPECT_TRUE(nearly_equal(r.best->objective.value, expected.objective))
                 << r.best->objective.value << " vs " << expected.objective;
-            proofs += std::any_of(r.notes.begin(), r.notes.end(), [](const std::string &n) {
-                return n.find("proven optimal by the hitting-set phase") != std::string::npos;
-            });
+            proofs += proven_by_the_phase(r);
         }
         ++seeds;
         nonempty_designs += !expected.configuration.empty();
@@ -352,9 +356,7 @@ void expect_phase_agrees(Mods mods, const std::string &label) {
         EXPECT_TRUE(same) << design_names(p, r.best->ranked.configuration).size() << " mods, "
                           << r.best->objective.value << " vs " << expected.objective;
         disagreements += !same;
-        proofs += std::any_of(r.notes.begin(), r.notes.end(), [](const std::string &n) {
-            return n.find("proven optimal by the hitting-set phase") != std::string::npos;
-        });
+        proofs += proven_by_the_phase(r);
         nonempty_designs += !expected.configuration.empty();
         lanes_chosen +=
             std::any_of(expected.configuration.begin(), expected.configuration.end(),
