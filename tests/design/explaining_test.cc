@@ -483,9 +483,7 @@ TEST(ExplainingSearch, AStoppedPhaseIsNeverCalledOptimal) {
             DesignSearchOptions options;
             options.deadline = Deadline{}.with_stop(&stop);
             DesignResult r = search_design(p, evaluator, options);
-            bool by_phase = std::any_of(r.notes.begin(), r.notes.end(), [](const auto &n) {
-                return n.find("proven optimal by the hitting-set phase") != std::string::npos;
-            });
+            bool by_phase = proven_by_the_phase(r);
             ASSERT_TRUE(r.best);
             if (r.optimal) {
                 EXPECT_TRUE(by_phase || !stop) << "after " << after;
