@@ -107,7 +107,7 @@ void LcmEvaluator::give_up(Batch &batch) {
     for (const auto &[id, sent] : batch.in_flight) {
         ids.push_back(id);
         if (!error_)
-            batch.dispatcher.receive(design::JobAnswer{sent.job, std::nullopt, {}});
+            batch.dispatcher.receive(design::JobAnswer{sent.job, std::nullopt, std::nullopt, {}});
     }
     batch.in_flight.clear();
     router_.forget(ids);

@@ -114,7 +114,7 @@ void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
 }
 
 design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
-    design::JobAnswer answer{job, std::nullopt, {}};
+    design::JobAnswer answer{job, std::nullopt, std::nullopt, {}};
     if (job.kind == design::JobKind::ROBOT_BOUND) {
         if (e.has_robot_bound)
             answer.robot_bound = e.robot_bound;

@@ -42,6 +42,7 @@ public:
             ConfigurationEvaluation e{configuration,
                                       EvaluationStatus::COMPLETE,
                                       std::vector<std::optional<TaskExplicability>>(answers.size()),
+                                      {},
                                       {}};
             for (std::size_t t = 0; t < answers.size() && e.status == EvaluationStatus::COMPLETE;
                  ++t) {

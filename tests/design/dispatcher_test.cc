@@ -31,7 +31,7 @@ TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
     };
     r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
     Dispatcher d({unevaluated({}), unevaluated({0})}, 2, true, r.callbacks);
-    auto answer_bound = [&](Job job, double bound) { d.receive({job, bound, {}}); };
+    auto answer_bound = [&](Job job, double bound) { d.receive({job, bound, std::nullopt, {}}); };
     // Both bounds of {} go out before anything else of it; {0}'s follow while they are away.
     std::vector<Job> sent;
     for (int i = 0; i < 4; ++i)
@@ -52,8 +52,8 @@ TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
     EXPECT_EQ(first.kind, JobKind::EXPLICABILITY);
     EXPECT_EQ(second.task, 1);
     EXPECT_FALSE(d.next_job());
-    d.receive({first, std::nullopt, solved(1)});
-    d.receive({second, std::nullopt, solved(2)});
+    d.receive({first, std::nullopt, std::nullopt, solved(1)});
+    d.receive({second, std::nullopt, std::nullopt, solved(2)});
     ASSERT_EQ(r.done.size(), 2u);
     EXPECT_EQ(r.done[1].status, EvaluationStatus::COMPLETE);
     EXPECT_EQ(r.done[1].tasks[1]->ie, 2);
@@ -68,7 +68,7 @@ TEST(Dispatcher, WithoutBoundsOnlyCompiledTasks) {
     d.finish_rest(); // out of time while the job is away: reported when it is back
     EXPECT_TRUE(r.done.empty());
     TaskExplicability limit; // LIMIT
-    d.receive({job, std::nullopt, limit});
+    d.receive({job, std::nullopt, std::nullopt, limit});
     ASSERT_EQ(r.done.size(), 1u);
     EXPECT_EQ(r.done[0].status, EvaluationStatus::LIMIT);
 }
@@ -96,7 +96,7 @@ TEST(Dispatcher, KnownTasksAndBoundsGetNoJob) {
     ASSERT_EQ(sent.size(), 1u); // only task 2's robot bound; then its tasks wait for it
     EXPECT_EQ(sent[0].kind, JobKind::ROBOT_BOUND);
     EXPECT_EQ(sent[0].task, 2);
-    d.receive({sent[0], 5.0, {}});
+    d.receive({sent[0], 5.0, std::nullopt, {}});
     sent.clear();
     while (auto job = d.next_job())
         sent.push_back(*job);
@@ -105,11 +105,35 @@ TEST(Dispatcher, KnownTasksAndBoundsGetNoJob) {
     EXPECT_EQ(sent[1].task, 2);
     for (const auto &job : sent) {
         EXPECT_EQ(job.kind, JobKind::EXPLICABILITY);
-        d.receive({job, std::nullopt, known});
+        d.receive({job, std::nullopt, std::nullopt, known});
     }
     ASSERT_EQ(r.done.size(), 2u);
     EXPECT_EQ(r.done[1].status, EvaluationStatus::COMPLETE);
     EXPECT_EQ(r.done[1].robot_cost_bounds[1], 4.0);
+}
+
+TEST(Dispatcher, AnIeFloorAbandonsBeforeTheOtherBounds) {
+    Recorder r;
+    r.callbacks.abandon = [](const ConfigurationEvaluation &e) {
+        for (const auto &floor : e.ie_floors)
+            if (floor.value_or(1) > 100)
+                return true;
+        return false;
+    };
+    r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
+    Dispatcher d({unevaluated({})}, 3, true, r.callbacks);
+    Job first = *d.next_job(); // one worker: one job at a time
+    EXPECT_EQ(first.kind, JobKind::ROBOT_BOUND);
+    d.receive({first, 7.0, std::nullopt, {}}); // no floor: the next bound goes out
+    Job second = *d.next_job();
+    EXPECT_EQ(second.kind, JobKind::ROBOT_BOUND);
+    EXPECT_EQ(second.task, 1);
+    d.receive({second, 9.0, 403.0, {}}); // e^6: no need for the third bound
+    ASSERT_EQ(r.done.size(), 1u);
+    EXPECT_EQ(r.done[0].status, EvaluationStatus::CUT_OFF);
+    EXPECT_EQ(r.done[0].ie_floors[1], 403.0);
+    EXPECT_FALSE(r.done[0].ie_floors[0]);
+    EXPECT_FALSE(d.next_job());
 }
 
 } // namespace

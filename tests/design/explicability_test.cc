@@ -192,5 +192,61 @@ TEST(Compilation, ParameterCountsMustAgree) {
     EXPECT_THROW(compile_explicable(m), pddl::ParseError);
 }
 
+// The IE floor (explicability.h): g(c_R* - c_H*), the least IE below zero or where a cost is
+// unknown.
+TEST(IeFloor, IsTheDistanceOfTheTwoOptimaWhenTheRobotsIsDearer) {
+    EXPECT_DOUBLE_EQ(ie_floor(5, 2, Distance::EXP_COST_DIFF), std::exp(3.0));
+    EXPECT_DOUBLE_EQ(ie_floor(5, 2, Distance::COST_DIFF), 3.0);
+    EXPECT_EQ(ie_floor(2, 5, Distance::EXP_COST_DIFF), 1.0);
+    EXPECT_EQ(ie_floor(2, 5, Distance::COST_DIFF), 0.0);
+    EXPECT_EQ(ie_floor(INF, 2, Distance::EXP_COST_DIFF), 1.0);
+    EXPECT_EQ(ie_floor(5, INF, Distance::COST_DIFF), 0.0);
+}
+
+// Costs from a function dominate only where both problems give the same values; a model
+// without a metric costs 1 a step, which a function term does not dominate.
+TEST(IeFloor, HumanCostsDominateOnlyWhereEveryActionCostsPeopleAtLeastTheRobots) {
+    ModelPair m = load(ROADS, "domain.pddl", "robot.pddl", "human.pddl");
+    EXPECT_FALSE(human_costs_dominate(m.robot_domain, m.robot_problem, m.human_domain,
+                                      m.human_problem)); // other road costs
+    EXPECT_TRUE(human_costs_dominate(m.robot_domain, m.robot_problem, m.human_domain,
+                                     m.robot_problem)); // the same costs
+    ModelPair unit = load(ROADS, "domain.pddl", "unit.pddl", "human.pddl");
+    EXPECT_FALSE(human_costs_dominate(unit.robot_domain, unit.robot_problem, unit.human_domain,
+                                      unit.human_problem)); // 1 a step against road costs
+    EXPECT_TRUE(human_costs_dominate(unit.robot_domain, unit.robot_problem, unit.human_domain,
+                                     unit.robot_problem)); // 1 a step both
+    pddl::Domain dearer = unit.human_domain; // people charge 2 a step, the robot 1
+    dearer.actions[0].costs = {pddl::CostExpression{2, std::nullopt}};
+    pddl::Problem metric = unit.robot_problem;
+    metric.minimize_total_cost = true;
+    EXPECT_TRUE(human_costs_dominate(unit.robot_domain, unit.robot_problem, dearer, metric));
+    EXPECT_FALSE(human_costs_dominate(dearer, metric, unit.human_domain, unit.robot_problem));
+}
+
+// On the paper's Blocksworld every robot plan costs people what it costs the robot, so the
+// most explicable plan is an optimal robot plan and the floor is the task's IE exactly:
+// problem 02, the 4-block state of instance 1 with the goal of instance 2: c_R* 12, c_H* 6
+// (people think the robot carries towers whole), IE e^6.
+TEST(IeFloor, IsTheIeOfTheMostExplicablePlanOnThePapersBlocksworld) {
+    const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/paper/blocksworld/";
+    ModelPair m;
+    m.robot_domain = pddl::parse_domain_file(dir + "domain-robot.pddl");
+    m.human_domain = pddl::parse_domain_file(dir + "domain-human.pddl");
+    m.robot_problem = pddl::parse_problem_file(dir + "02/init-4-1-goal-4-2.pddl", m.robot_domain);
+    m.human_problem = m.robot_problem;
+    ASSERT_TRUE(human_costs_dominate(m.robot_domain, m.robot_problem, m.human_domain,
+                                     m.human_problem));
+    PlanCache planner(planning::PlannerOptions{});
+    PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
+    TaskExplicability e = evaluate(m);
+    ASSERT_EQ(robot.status, PlanStatus::SOLVED);
+    ASSERT_EQ(e.status, ExplicabilityStatus::SOLVED);
+    EXPECT_EQ(robot.cost, 12);
+    EXPECT_EQ(*e.human_optimal_cost, 6);
+    EXPECT_DOUBLE_EQ(e.ie, std::exp(6.0));
+    EXPECT_DOUBLE_EQ(ie_floor(robot.cost, *e.human_optimal_cost, Distance::EXP_COST_DIFF), e.ie);
+}
+
 } // namespace
 } // namespace envdesign::design

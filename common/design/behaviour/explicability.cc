@@ -45,6 +45,13 @@ double inexplicability(double human_plan_cost, double human_optimal_cost, Distan
     return distance == Distance::COST_DIFF ? difference : std::exp(difference);
 }
 
+double ie_floor(double robot_optimal_cost, double human_optimal_cost, Distance distance) {
+    if (!std::isfinite(robot_optimal_cost) || !std::isfinite(human_optimal_cost) ||
+        robot_optimal_cost <= human_optimal_cost)
+        return least_ie(distance);
+    return inexplicability(robot_optimal_cost, human_optimal_cost, distance);
+}
+
 TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
                                          PlanCache &planner, const Deadline &deadline,
                                          bool solve_human_anyway) {

@@ -30,6 +30,13 @@ double inexplicability(double human_plan_cost, double human_optimal_cost, Distan
 // COST_DIFF. The one definition the objective, the bounds and the explanation use.
 double least_ie(Distance distance);
 
+// A lower bound on a task's IE from the two models' optimal costs alone, where people's cost
+// of every action is at least the robot's (human_costs_dominate, compilation.h): every plan
+// the robot may follow costs people at least c_R*, so IE >= g(c_R* - c_H*). That holds for
+// the most explicable plan and for every optimal plan of the COST_OPTIMAL robots, not for
+// the explaining robot's cheaper option. The least IE when c_R* <= c_H* or either is unknown.
+double ie_floor(double robot_optimal_cost, double human_optimal_cost, Distance distance);
+
 // Compiles and grounds P_mod and P_H of `models` and plans both through `planner`.
 // `solve_human_anyway`: also solve P_H when P_mod has no plan (for reporting c_H*).
 // Throws pddl::ParseError if the models cannot be compiled or grounded.

@@ -10,6 +10,7 @@ Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int ta
         e.status = EvaluationStatus::LIMIT;
         e.tasks.resize(tasks);
         e.robot_cost_bounds.resize(tasks);
+        e.ie_floors.resize(tasks);
         for (int t = 0; t < tasks; ++t) {
             if (e.tasks[t])
                 continue;
@@ -65,6 +66,7 @@ void Dispatcher::receive(JobAnswer a) {
     if (a.job.kind == JobKind::ROBOT_BOUND) {
         ++p.bounds_known;
         state_[c].robot_cost_bounds[a.job.task] = a.robot_bound;
+        state_[c].ie_floors[a.job.task] = a.ie_floor;
     } else if (a.explicability.status == ExplicabilityStatus::LIMIT) {
         stop(c, EvaluationStatus::LIMIT);
     } else {
@@ -72,7 +74,7 @@ void Dispatcher::receive(JobAnswer a) {
     }
     if (!p.stopped && complete(c))
         stop(c, EvaluationStatus::COMPLETE);
-    else if (!p.stopped && p.bounds_known == static_cast<int>(p.bounds_needed.size()) && abandon(c))
+    else if (!p.stopped && abandon(c)) // every answer may raise the bound, a bound's too
         stop(c, EvaluationStatus::CUT_OFF);
     finish_if_idle(c);
 }

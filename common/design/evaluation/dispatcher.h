@@ -5,9 +5,10 @@
 //
 // Per configuration, the dispatcher first asks for the robot's optimal cost of every task
 // (ROBOT_BOUND jobs: cheap, and usually cache hits, since most modifications leave the robot
-// alone), then asks `abandon` whether the configuration can still win, and only then for
-// the explicability of each task (EXPLICABILITY jobs: the compiled task and the human's
-// task), asking `abandon` again after each answer. Configurations are served in batch order;
+// alone; an evaluator may add a floor on the task's IE), then for the explicability of each
+// task (EXPLICABILITY jobs: the compiled task and the human's task), asking `abandon`
+// whether the configuration can still win after each answer and before each
+// EXPLICABILITY job. Configurations are served in batch order;
 // while one waits for answers, the next one's jobs go out.
 
 #include "design/evaluation/evaluator.h"
@@ -28,6 +29,7 @@ struct Job {
 struct JobAnswer {
     Job job;
     std::optional<double> robot_bound; // ROBOT_BOUND: c_R* (INF: no plan), unset: no bound
+    std::optional<double> ie_floor;    // ROBOT_BOUND: a lower bound on the task's IE, if any
     TaskExplicability explicability;   // EXPLICABILITY
 };
 

@@ -13,7 +13,7 @@
 // The search keeps control of what is worth evaluating: before each task of a configuration
 // is started and after each one finishes, the evaluator asks `abandon` whether the
 // configuration can still win; if not, it drops the rest (status CUT_OFF). An evaluator may
-// first find cheap lower bounds (robot_cost_bounds) to sharpen that question. Both
+// first find cheap lower bounds (robot_cost_bounds, ie_floors) to sharpen that question. Both
 // callbacks run on the thread that called evaluate(), never concurrently.
 
 #include "design/evaluation/task_evaluation.h"
@@ -40,6 +40,9 @@ struct ConfigurationEvaluation {
     // Per task, a lower bound on c_R(pi) known before the task is evaluated: the optimal
     // cost of the robot's own model (the most explicable plan is one of its plans).
     std::vector<std::optional<double>> robot_cost_bounds;
+    // Per task, a lower bound on its IE known before the task is evaluated (ie_floor in
+    // explicability.h), where the evaluator could argue one; unset: the least IE.
+    std::vector<std::optional<double>> ie_floors;
 };
 
 // A configuration with nothing known yet.

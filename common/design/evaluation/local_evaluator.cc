@@ -3,9 +3,12 @@
 #include "design/behaviour/evaluate_task.h"
 #include "design/behaviour/explicability.h"
 #include "design/evaluation/dispatcher.h"
+#include "design/model/compilation.h"
 
 #include "concurrency/blocking_queue.h"
 
+#include <algorithm>
+#include <cmath>
 #include <exception>
 #include <thread>
 
@@ -14,7 +17,7 @@ namespace envdesign::design {
 Evaluator::~Evaluator() = default;
 
 ConfigurationEvaluation unevaluated(Configuration configuration) {
-    return {std::move(configuration), EvaluationStatus::LIMIT, {}, {}};
+    return {std::move(configuration), EvaluationStatus::LIMIT, {}, {}, {}};
 }
 
 namespace {
@@ -30,12 +33,22 @@ struct Channel {
     concurrency::BlockingQueue<Answer> answers; // never closed: each job sends one
 };
 
+// Whether ROBOT_BOUND jobs can answer IE floors for `problem` (local_evaluator.h).
+bool floors_apply(const DesignProblem &problem) {
+    if (problem.weights.behaviour == RobotBehaviour::EXPLAINING)
+        return false;
+    return std::all_of(problem.tasks.begin(), problem.tasks.end(), [&](const DesignTask &t) {
+        return human_costs_dominate(problem.robot_domain, t.robot_problem, problem.human_domain,
+                                    t.human_problem);
+    });
+}
+
 } // namespace
 
 LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
                                planning::PlannerOptions options)
     : problem_(problem), workers_(std::max(1, workers)), cache_(std::move(options)),
-      robot_bounds_(problem.weights.kappa > 0) {}
+      ie_floors_(floors_apply(problem)), robot_bounds_(problem.weights.kappa > 0 || ie_floors_) {}
 
 TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
                                                 const Deadline &deadline) {
@@ -54,12 +67,26 @@ std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &conf
     return std::nullopt;
 }
 
+std::optional<double> LocalEvaluator::ie_floor(const Configuration &configuration, int task,
+                                               std::optional<double> robot_bound,
+                                               const Deadline &deadline) {
+    if (!ie_floors_ || !robot_bound || !std::isfinite(*robot_bound))
+        return std::nullopt;
+    ModelPair models = configured_models(problem_, configuration, task);
+    PlanOutcome human = solve_model(models.human_domain, models.human_problem, cache_, deadline);
+    if (human.status != PlanStatus::SOLVED)
+        return std::nullopt;
+    return design::ie_floor(*robot_bound, static_cast<double>(human.cost),
+                            problem_.weights.distance);
+}
+
 JobAnswer LocalEvaluator::run(const Configuration &configuration, const Job &job,
                               const Deadline &deadline) {
-    JobAnswer answer{job, std::nullopt, {}};
-    if (job.kind == JobKind::ROBOT_BOUND)
+    JobAnswer answer{job, std::nullopt, std::nullopt, {}};
+    if (job.kind == JobKind::ROBOT_BOUND) {
         answer.robot_bound = robot_cost_bound(configuration, job.task, deadline);
-    else
+        answer.ie_floor = ie_floor(configuration, job.task, answer.robot_bound, deadline);
+    } else
         answer.explicability = evaluate_task(configuration, job.task, deadline);
     return answer;
 }
@@ -72,7 +99,7 @@ void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
     for (int i = 0; i < workers_; ++i) {
         threads.emplace_back([&] {
             while (auto job = channel.jobs.pop()) {
-                Answer a{{*job, std::nullopt, {}}, nullptr};
+                Answer a{{*job, std::nullopt, std::nullopt, {}}, nullptr};
                 try {
                     a.answer = run(batch[job->configuration].configuration, *job, deadline);
                 } catch (...) {

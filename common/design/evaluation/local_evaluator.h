@@ -2,7 +2,12 @@
 // The in-process Evaluator: `workers` threads run the jobs of a Dispatcher (dispatcher.h),
 // sharing one PlanCache, while the calling thread hands out jobs (at most one per worker in
 // flight, so that `abandon` sees the latest answers) and collects the answers. Robot-cost
-// bounds are asked for only when the objective weighs the robot's cost (kappa > 0).
+// bounds are asked for when the objective weighs the robot's cost (kappa > 0) or when they
+// give IE floors: with a robot that acts (not EXPLAINING) and people's costs at least the
+// robot's (human_costs_dominate), a ROBOT_BOUND job also solves the human's model and
+// answers IE >= g(c_R* - c_H*), so a design whose robot must do what people think takes
+// longer is abandoned without the compiled task (the EXPLICABILITY job then finds c_H* in
+// the plan cache).
 
 #include "design/design_problem.h"
 #include "design/evaluation/dispatcher.h"
@@ -27,6 +32,10 @@ public:
     // The robot's optimal cost under `configuration` (INF: no plan; unset: out of time).
     std::optional<double> robot_cost_bound(const Configuration &configuration, int task,
                                            const Deadline &deadline);
+    // ie_floor of the task under `configuration` given its robot bound; unset where no floor
+    // is argued (see above) or out of time.
+    std::optional<double> ie_floor(const Configuration &configuration, int task,
+                                   std::optional<double> robot_bound, const Deadline &deadline);
     PlanCache &planner() { return cache_; }
 
 private:
@@ -35,6 +44,7 @@ private:
     const DesignProblem &problem_;
     int workers_;
     PlanCache cache_;
+    bool ie_floors_; // before robot_bounds_, which reads it
     bool robot_bounds_;
     long long task_evaluations_ = 0;
 };

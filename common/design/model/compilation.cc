@@ -1,6 +1,8 @@
 #include "design/model/compilation.h"
 
+#include <algorithm>
 #include <map>
+#include <utility>
 
 namespace envdesign::design {
 namespace {
@@ -165,7 +167,41 @@ pddl::Problem compile_problem(const ModelPair &models, const pddl::Domain &domai
     return out;
 }
 
+// The constant part of a cost and its function terms, sorted.
+std::pair<int, std::vector<pddl::Atom>> split_cost(const std::vector<pddl::CostExpression> &costs) {
+    std::pair<int, std::vector<pddl::Atom>> out{0, {}};
+    for (const auto &c : costs) {
+        out.first += c.constant;
+        if (c.function)
+            out.second.push_back(*c.function);
+    }
+    std::sort(out.second.begin(), out.second.end());
+    return out;
+}
+
 } // namespace
+
+bool human_costs_dominate(const pddl::Domain &robot_domain, const pddl::Problem &robot_problem,
+                          const pddl::Domain &human_domain, const pddl::Problem &human_problem) {
+    for (const auto &robot : robot_domain.actions) {
+        const pddl::Action *human = human_domain.find_action(robot.name);
+        if (!human || human->parameters.size() != robot.parameters.size())
+            continue; // not in P_mod (a mismatch is compile_explicable's error to report)
+        Renaming vars;
+        for (std::size_t i = 0; i < robot.parameters.size(); ++i)
+            vars[human->parameters[i].name] = robot.parameters[i].name;
+        auto [robot_constant, robot_terms] =
+            split_cost(model_cost(robot, robot_problem.minimize_total_cost, "", {}));
+        auto [human_constant, human_terms] =
+            split_cost(model_cost(*human, human_problem.minimize_total_cost, "", vars));
+        if (human_constant < robot_constant || human_terms != robot_terms)
+            return false;
+        // The same terms cost the same only where both problems give them the same values.
+        if (!robot_terms.empty() && robot_problem.function_values != human_problem.function_values)
+            return false;
+    }
+    return true;
+}
 
 std::string robot_copy(const std::string &name) { return "r-" + name; }
 std::string human_copy(const std::string &name) { return "h-" + name; }

@@ -28,6 +28,13 @@ struct CompiledTask {
 // parameter count or types, a type's parent, an object's type.
 CompiledTask compile_explicable(const ModelPair &models);
 
+// Whether every action both models have costs people at least what it costs the robot, in
+// every instance. Then every plan of P_mod costs people at least the robot's optimum c_R*,
+// so a task's IE is at least g(c_R* - c_H*) (explicability.h, ie_floor). Modifications edit
+// neither action costs nor function values, so the spec's models answer for every design.
+bool human_costs_dominate(const pddl::Domain &robot_domain, const pddl::Problem &robot_problem,
+                          const pddl::Domain &human_domain, const pddl::Problem &human_problem);
+
 std::string robot_copy(const std::string &name);
 std::string human_copy(const std::string &name);
 

@@ -62,7 +62,8 @@ Objective objective_of(const ObjectiveWeights &w, double design_cost,
 
 double objective_lower_bound(const DesignProblem &problem, double design_cost,
                              const std::vector<const TaskExplicability *> &known,
-                             const std::vector<std::optional<double>> &robot_cost_bounds) {
+                             const std::vector<std::optional<double>> &robot_cost_bounds,
+                             const std::vector<std::optional<double>> &ie_floors) {
     const ObjectiveWeights &w = problem.weights;
     double expected_ie = 0, expected_cost = 0, expected_explanation = 0;
     for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
@@ -78,8 +79,12 @@ double objective_lower_bound(const DesignProblem &problem, double design_cost,
             i < robot_cost_bounds.size() && robot_cost_bounds[i] ? *robot_cost_bounds[i] : 0.0;
         if (!settled && std::isinf(bound))
             return INF;
-        // An unknown task: least IE, no explanation, robot cost at least c_R* (both options).
-        expected_ie += p * (settled ? c.ie : least_ie(w.distance));
+        // An unknown task: its IE floor (or the least IE), no explanation, robot cost at
+        // least c_R* (both options).
+        double ie_floor = i < ie_floors.size() && ie_floors[i]
+                              ? std::max(*ie_floors[i], least_ie(w.distance))
+                              : least_ie(w.distance);
+        expected_ie += p * (settled ? c.ie : ie_floor);
         expected_cost += p * (settled ? c.robot_cost : bound);
         expected_explanation += p * c.explanation;
     }

@@ -61,12 +61,14 @@ Objective objective_of(const ObjectiveWeights &weights, double design_cost,
                        const std::vector<TaskExplicability> &tasks);
 
 // A lower bound on the objective when only some tasks are known (`known[i]` null: task i
-// not evaluated yet): unknown tasks count with the least IE the distance allows (1 or 0)
-// and robot cost `robot_cost_bounds[i]` when given (INF: the robot has no plan, so neither
-// has P_mod), else 0. With no task known it bounds every configuration of that design cost.
+// not evaluated yet): unknown tasks count with IE `ie_floors[i]` when given, else the least
+// IE the distance allows (1 or 0), and robot cost `robot_cost_bounds[i]` when given (INF:
+// the robot has no plan, so neither has P_mod), else 0. With no task known and no floor it
+// bounds every configuration of that design cost.
 double objective_lower_bound(const DesignProblem &problem, double design_cost,
                              const std::vector<const TaskExplicability *> &known,
-                             const std::vector<std::optional<double>> &robot_cost_bounds = {});
+                             const std::vector<std::optional<double>> &robot_cost_bounds = {},
+                             const std::vector<std::optional<double>> &ie_floors = {});
 
 // a == b within a relative 1e-9 (infinities equal each other only).
 bool nearly_equal(double a, double b);

@@ -139,11 +139,12 @@ private:
 
     bool cannot_win(const Configuration &configuration,
                     const std::vector<const TaskExplicability *> &known,
-                    const std::vector<std::optional<double>> &robot_cost_bounds = {}) const {
+                    const std::vector<std::optional<double>> &robot_cost_bounds = {},
+                    const std::vector<std::optional<double>> &ie_floors = {}) const {
         if (!result_.best)
             return false;
         double bound = objective_lower_bound(problem_, design_cost(problem_, configuration), known,
-                                             robot_cost_bounds);
+                                             robot_cost_bounds, ie_floors);
         return clearly_greater(bound, ranking_limit(result_, ranking_));
     }
 
@@ -158,7 +159,8 @@ private:
             std::vector<const TaskExplicability *> known;
             for (const auto &t : partial.tasks)
                 known.push_back(t ? &*t : nullptr);
-            return cannot_win(partial.configuration, known, partial.robot_cost_bounds);
+            return cannot_win(partial.configuration, known, partial.robot_cost_bounds,
+                              partial.ie_floors);
         };
         callbacks.done = [&](ConfigurationEvaluation e) { collect(std::move(e)); };
         evaluator_.evaluate(requests, options_.deadline, callbacks);

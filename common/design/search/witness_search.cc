@@ -355,7 +355,8 @@ private:
         std::vector<const TaskExplicability *> tasks;
         for (const auto &t : partial.tasks)
             tasks.push_back(t ? &*t : nullptr);
-        return objective_lower_bound(problem_, cost, tasks, partial.robot_cost_bounds);
+        return objective_lower_bound(problem_, cost, tasks, partial.robot_cost_bounds,
+                                     partial.ie_floors);
     }
 
     // When every modification outside `node` is added everywhere anyway, its witnesses do not
