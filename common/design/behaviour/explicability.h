@@ -33,8 +33,10 @@ double least_ie(Distance distance);
 // A lower bound on a task's IE from the two models' optimal costs alone, where people's cost
 // of every action is at least the robot's (human_costs_dominate, compilation.h): every plan
 // the robot may follow costs people at least c_R*, so IE >= g(c_R* - c_H*). That holds for
-// the most explicable plan and for every optimal plan of the COST_OPTIMAL robots, not for
-// the explaining robot's cheaper option. The least IE when c_R* <= c_H* or either is unknown.
+// the most explicable plan and for every optimal plan of the COST_OPTIMAL robots. The
+// explaining robot may explain instead; but above the least IE its own plan pi_R costs
+// people more than c_H*, so an explanation tells at least one difference (the objective's
+// bound takes the cheaper of the two). The least IE when c_R* <= c_H* or either is unknown.
 double ie_floor(double robot_optimal_cost, double human_optimal_cost, Distance distance);
 
 // Compiles and grounds P_mod and P_H of `models` and plans both through `planner`.

@@ -35,8 +35,6 @@ struct Channel {
 
 // Whether ROBOT_BOUND jobs can answer IE floors for `problem` (local_evaluator.h).
 bool floors_apply(const DesignProblem &problem) {
-    if (problem.weights.behaviour == RobotBehaviour::EXPLAINING)
-        return false;
     return std::all_of(problem.tasks.begin(), problem.tasks.end(), [&](const DesignTask &t) {
         return human_costs_dominate(problem.robot_domain, t.robot_problem, problem.human_domain,
                                     t.human_problem);

@@ -3,11 +3,10 @@
 // sharing one PlanCache, while the calling thread hands out jobs (at most one per worker in
 // flight, so that `abandon` sees the latest answers) and collects the answers. Robot-cost
 // bounds are asked for when the objective weighs the robot's cost (kappa > 0) or when they
-// give IE floors: with a robot that acts (not EXPLAINING) and people's costs at least the
-// robot's (human_costs_dominate), a ROBOT_BOUND job also solves the human's model and
-// answers IE >= g(c_R* - c_H*), so a design whose robot must do what people think takes
-// longer is abandoned without the compiled task (the EXPLICABILITY job then finds c_H* in
-// the plan cache).
+// give IE floors: where people's costs are at least the robot's (human_costs_dominate), a
+// ROBOT_BOUND job also solves the human's model and answers ie_floor (explicability.h), so a
+// design whose robot must do what people think takes longer is abandoned without the
+// compiled task or an explanation (the EXPLICABILITY job then finds c_H* in the plan cache).
 
 #include "design/design_problem.h"
 #include "design/evaluation/dispatcher.h"

@@ -17,6 +17,20 @@ double contribution(const ObjectiveWeights &w, double ie, double extra, double c
     return std::isnan(value) ? INF : value;
 }
 
+// The least a task not evaluated yet can cost, from its IE floor: acting at IE >= floor, or
+// (a robot that may explain, floor above the least IE) explaining at least one difference.
+BehaviourChoice floor_choice(const ObjectiveWeights &w, double floor, double robot_bound) {
+    double least = least_ie(w.distance);
+    BehaviourChoice act{true, false, std::max(floor, least), robot_bound, 0};
+    if (!behaviour_of(w.behaviour).may_explain || act.ie <= least)
+        return act;
+    BehaviourChoice explain{true, true, least, robot_bound, w.explanation_cost};
+    double act_value = contribution(w, act.ie, 0, robot_bound);
+    double explain_value =
+        contribution(w, least, discounted_horizon(w) * w.explanation_cost, robot_bound);
+    return explain_value < act_value ? explain : act;
+}
+
 } // namespace
 
 double objective_value(const ObjectiveWeights &w, const ObjectiveTerms &t) {
@@ -79,13 +93,13 @@ double objective_lower_bound(const DesignProblem &problem, double design_cost,
             i < robot_cost_bounds.size() && robot_cost_bounds[i] ? *robot_cost_bounds[i] : 0.0;
         if (!settled && std::isinf(bound))
             return INF;
-        // An unknown task: its IE floor (or the least IE), no explanation, robot cost at
-        // least c_R* (both options).
-        double ie_floor = i < ie_floors.size() && ie_floors[i]
-                              ? std::max(*ie_floors[i], least_ie(w.distance))
-                              : least_ie(w.distance);
-        expected_ie += p * (settled ? c.ie : ie_floor);
-        expected_cost += p * (settled ? c.robot_cost : bound);
+        // An unknown task: robot cost at least c_R* (both options), and the cheaper of its
+        // IE floor (the least IE without one) and, for a robot that may explain, telling one
+        // difference (explicability.h: above the least IE, pi_R needs one).
+        if (!settled)
+            c = floor_choice(w, i < ie_floors.size() && ie_floors[i] ? *ie_floors[i] : 0, bound);
+        expected_ie += p * c.ie;
+        expected_cost += p * c.robot_cost;
         expected_explanation += p * c.explanation;
     }
     ObjectiveTerms terms{expected_ie * discounted_horizon(w), design_cost,
