@@ -20,7 +20,7 @@ LcmEvaluator::LcmEvaluator(const design::DesignProblem &problem, JobRouter &rout
                            RemoteRequest request, const std::atomic<bool> &cancelled,
                            double grace_s)
     : problem_(problem), router_(router), request_(std::move(request)), cancelled_(cancelled),
-      grace_s_(grace_s), robot_bounds_(problem.weights.kappa > 0),
+      grace_s_(grace_s), robot_bounds_(design::asks_robot_bounds(problem)),
       owner_(router.open(inbox_, request_.client)) {}
 
 LcmEvaluator::~LcmEvaluator() { router_.close(owner_); }

@@ -439,12 +439,7 @@ envdesign::evaluation_t Planner::evaluate(const Pending &pending, WorkerCaches &
                 .with_stop(stop);
         design::Configuration configuration = wire::configuration_of(job);
         design::EvaluatorCounters before = evaluator.counters();
-        if (job.kind == envdesign::job_t::KIND_ROBOT_BOUND)
-            wire::put_robot_bound(evaluator.robot_cost_bound(configuration, job.task, deadline),
-                                  answer);
-        else
-            wire::put_explicability(evaluator.evaluate_task(configuration, job.task, deadline),
-                                    answer);
+        wire::put_answer(evaluator.answer(configuration, wire::job_of(job), deadline), answer);
         design::EvaluatorCounters after = evaluator.counters();
         answer.planner_runs = static_cast<std::int32_t>(after.planner_runs - before.planner_runs);
         answer.cache_hits = static_cast<std::int32_t>(after.cache_hits - before.cache_hits);

@@ -67,21 +67,31 @@ design::Configuration configuration_of(const envdesign::job_t &job) {
     return design::Configuration(job.modifications.begin(), job.modifications.end());
 }
 
+design::Job job_of(const envdesign::job_t &job) {
+    return {0, job.task,
+            job.kind == envdesign::job_t::KIND_ROBOT_BOUND ? design::JobKind::ROBOT_BOUND
+                                                           : design::JobKind::EXPLICABILITY};
+}
+
 std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t kind) {
     if (e.kind != kind)
         return "the answer's kind differs from the job's";
     if (e.status < evaluation_t::STATUS_SOLVED || e.status > evaluation_t::STATUS_ERROR)
         return "unknown status " + std::to_string(e.status);
-    if (kind == envdesign::job_t::KIND_ROBOT_BOUND)
-        return e.has_robot_bound && !design::valid_plan_cost(e.robot_bound)
-                   ? std::optional<std::string>("the robot bound is not a cost in [0, 2^31) or "
-                                                "infinite")
-                   : std::nullopt;
+    if (kind == envdesign::job_t::KIND_ROBOT_BOUND) {
+        if (e.has_robot_bound && !design::valid_plan_cost(e.robot_bound))
+            return "the robot bound is not a cost in [0, 2^31) or infinite";
+        if (e.has_ie_floor && !design::valid_ie(e.ie_floor))
+            return "the IE floor is not a number >= 0";
+        return std::nullopt;
+    }
     if (e.status != evaluation_t::STATUS_SOLVED && e.status != evaluation_t::STATUS_INEXPLICABLE)
         return std::nullopt;
     // The same check as a record read back from the store (design/model/numbers.h).
     return design::evaluation_problem(job_answer(design::Job{}, e).explicability);
 }
+
+namespace {
 
 void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     switch (t.status) {
@@ -107,10 +117,21 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     e.optimal_actions_length = static_cast<std::int32_t>(e.optimal_actions.size());
 }
 
-void put_robot_bound(std::optional<double> bound, evaluation_t &e) {
+void put_robot_bound(std::optional<double> bound, std::optional<double> ie_floor, evaluation_t &e) {
     e.status = bound ? evaluation_t::STATUS_SOLVED : evaluation_t::STATUS_LIMIT;
     e.has_robot_bound = bound.has_value();
     e.robot_bound = bound.value_or(design::INF);
+    e.has_ie_floor = bound && ie_floor;
+    e.ie_floor = e.has_ie_floor ? *ie_floor : 0;
+}
+
+} // namespace
+
+void put_answer(const design::JobAnswer &answer, evaluation_t &e) {
+    if (answer.job.kind == design::JobKind::ROBOT_BOUND)
+        put_robot_bound(answer.robot_bound, answer.ie_floor, e);
+    else
+        put_explicability(answer.explicability, e);
 }
 
 design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
@@ -118,6 +139,8 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
     if (job.kind == design::JobKind::ROBOT_BOUND) {
         if (e.has_robot_bound)
             answer.robot_bound = e.robot_bound;
+        if (e.has_robot_bound && e.has_ie_floor)
+            answer.ie_floor = e.ie_floor;
         return answer;
     }
     design::TaskExplicability &t = answer.explicability;

@@ -30,14 +30,16 @@ std::optional<std::string> job_problem(const envdesign::job_t &job,
                                        const design::DesignProblem &problem);
 
 design::Configuration configuration_of(const envdesign::job_t &job);
+// The job a planner runs for `job` (its kind and task; configuration 0).
+design::Job job_of(const envdesign::job_t &job);
 
 // Why an answer cannot be taken (unknown status, kind mismatch, an ill-formed value).
 std::optional<std::string> evaluation_problem(const envdesign::evaluation_t &evaluation,
                                               std::int8_t kind);
 
-// Fills the answer fields of `evaluation` (status, values, plan).
-void put_explicability(const design::TaskExplicability &task, envdesign::evaluation_t &evaluation);
-void put_robot_bound(std::optional<double> bound, envdesign::evaluation_t &evaluation);
+// Fills the answer fields of `evaluation` (status, values, plan; or the bounds) from a
+// planner's answer to the job (LocalEvaluator::answer).
+void put_answer(const design::JobAnswer &answer, envdesign::evaluation_t &evaluation);
 
 // The dispatcher's view of an answer that passed evaluation_problem.
 design::JobAnswer job_answer(const design::Job &job, const envdesign::evaluation_t &evaluation);

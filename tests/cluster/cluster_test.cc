@@ -85,10 +85,7 @@ private:
         e.job_id = job.job_id;
         e.kind = job.kind;
         design::Configuration c = wire::configuration_of(job);
-        if (job.kind == envdesign::job_t::KIND_ROBOT_BOUND)
-            wire::put_robot_bound(evaluator_.robot_cost_bound(c, job.task, {}), e);
-        else
-            wire::put_explicability(evaluator_.evaluate_task(c, job.task, {}), e);
+        wire::put_answer(evaluator_.answer(c, wire::job_of(job), {}), e);
         return e;
     }
 

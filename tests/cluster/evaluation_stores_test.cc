@@ -48,7 +48,7 @@ TEST_F(EvaluationStoresTest, TrimDropsTheLeastRecentlyUsed) {
     auto first = stores.store_for(restaurant, 0);
     first->keep({0}, key, solved(1));
     first->keep({1}, key, solved(2));
-    first->keep_robot_bound({2}, key, 9); // bounds count too
+    first->keep_robot_bound({2}, key, {9, std::nullopt}); // bounds count too
     auto second = stores.store_for(blocks, 0);
     second->keep({0}, design::task_key(blocks, 0), solved(3));
     stores.trim();
@@ -81,13 +81,13 @@ TEST_F(EvaluationStoresTest, StoresOverAStateFileOutliveTheirProcess) {
     {
         EvaluationStores before(100, open());
         before.store_for(restaurant, 0)->keep({1}, key, solved(5));
-        before.store_for(restaurant, 0)->keep_robot_bound({1}, key, 6);
+        before.store_for(restaurant, 0)->keep_robot_bound({1}, key, {6, std::nullopt});
     }
     EvaluationStores after(100, open());
     auto store = after.store_for(restaurant, 0);
     ASSERT_TRUE(store->find({1}, key));
     EXPECT_EQ(store->find({1}, key)->ie, 5);
-    EXPECT_EQ(store->find_robot_bound({1}, key), 6);
+    EXPECT_EQ(store->find_robot_bound({1}, key)->cost, 6);
     EXPECT_FALSE(after.store_for(restaurant, 1)->find({1}, key)); // another heuristic
     EXPECT_FALSE(store->find({0}, key));
     std::filesystem::remove_all(dir);

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <filesystem>
 #include <unistd.h>
 
@@ -49,8 +51,13 @@ TEST(EvaluationRecord, ReadsBackWhatWasWritten) {
     none.status = ExplicabilityStatus::INEXPLICABLE;
     none.human_optimal_cost = INF;
     expect_equal(*decode_evaluation(encode_evaluation(none)), none);
-    EXPECT_EQ(decode_robot_bound(encode_robot_bound(12.5)), 12.5);
-    EXPECT_EQ(decode_robot_bound(encode_robot_bound(INF)), INF);
+    EXPECT_EQ(decode_robot_bound(encode_robot_bound({12.5, std::nullopt}))->cost, 12.5);
+    EXPECT_EQ(decode_robot_bound(encode_robot_bound({INF, std::nullopt}))->cost, INF);
+    EXPECT_FALSE(
+        decode_robot_bound(encode_robot_bound({12.5, std::nullopt}))->ie_floor); // a record without
+    auto floored = decode_robot_bound(encode_robot_bound({12, std::exp(4.0)}));
+    ASSERT_TRUE(floored && floored->ie_floor);
+    EXPECT_EQ(*floored->ie_floor, std::exp(4.0));
 }
 
 // COST_OPTIMAL modes keep every action of the optimal plans (the witnesses); the records of
@@ -76,7 +83,7 @@ TEST(EvaluationRecord, RefusesWhatItDidNotWrite) {
     other_version[0] = static_cast<char>(RECORD_VERSION + 1);
     EXPECT_FALSE(decode_evaluation(other_version));
     EXPECT_FALSE(decode_robot_bound(bytes)); // a record of the other kind
-    EXPECT_FALSE(decode_evaluation(encode_robot_bound(3)));
+    EXPECT_FALSE(decode_evaluation(encode_robot_bound({3, std::nullopt})));
 }
 
 TEST(EvaluationRecord, NamesChangeWithWhatTheRecordMeans) {
@@ -146,12 +153,14 @@ TEST_F(DurableStoreTest, KeptEntriesAreInTheFileAtOnce) {
     TaskKey task = task_key(problem, 0);
     EvaluationStore writer(open(), scope);
     writer.keep({1}, task, solved());
-    writer.keep_robot_bound({1}, task, 4);
+    writer.keep_robot_bound({1}, task, {4, 20.0});
     TaskExplicability limit;
     writer.keep({2}, task, limit);         // LIMIT: nothing to keep
     EvaluationStore reader(open(), scope); // a second handle, as after a restart
     expect_equal(*reader.find({1}, task), solved());
-    EXPECT_EQ(reader.find_robot_bound({1}, task), 4);
+    ASSERT_TRUE(reader.find_robot_bound({1}, task));
+    EXPECT_EQ(reader.find_robot_bound({1}, task)->cost, 4);
+    EXPECT_EQ(reader.find_robot_bound({1}, task)->ie_floor, 20.0);
     EXPECT_FALSE(reader.find({2}, task));
     EXPECT_FALSE(reader.find({1}, task_key(problem, 1)));
 }

@@ -79,10 +79,13 @@ TEST(Numbers, StoredRecordsAreCheckedWhenRead) {
     bad = solved_example();
     bad.human_plan_cost = 1e308;
     EXPECT_FALSE(decode_evaluation(encode_evaluation(bad)));
-    EXPECT_EQ(decode_robot_bound(encode_robot_bound(12)), 12);
-    EXPECT_EQ(decode_robot_bound(encode_robot_bound(INF)), INF);
-    EXPECT_FALSE(decode_robot_bound(encode_robot_bound(1e308)));
-    EXPECT_FALSE(decode_robot_bound(encode_robot_bound(NaN)));
+    EXPECT_EQ(decode_robot_bound(encode_robot_bound({12, std::nullopt}))->cost, 12);
+    EXPECT_EQ(decode_robot_bound(encode_robot_bound({INF, std::nullopt}))->cost, INF);
+    EXPECT_FALSE(decode_robot_bound(encode_robot_bound({1e308, std::nullopt})));
+    EXPECT_FALSE(decode_robot_bound(encode_robot_bound({NaN, std::nullopt})));
+    EXPECT_EQ(decode_robot_bound(encode_robot_bound({12, INF}))->ie_floor, INF); // exp overflows
+    EXPECT_FALSE(decode_robot_bound(encode_robot_bound({12, -1.0})));
+    EXPECT_FALSE(decode_robot_bound(encode_robot_bound({12, NaN})));
 }
 
 } // namespace

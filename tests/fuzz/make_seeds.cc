@@ -174,6 +174,10 @@ void wire_number_seeds(const fs::path &source, const fs::path &out) {
     e.has_robot_bound = true;
     e.robot_bound = 1e308;
     seed("robot-bound-1e308", 0, bus::encode_message(e));
+    e.robot_bound = 9;
+    e.has_ie_floor = true;
+    e.ie_floor = -1;
+    seed("ie-floor-negative", 0, bus::encode_message(e));
     envdesign::job_t job{};
     job.sender = "coordinator";
     job.planner = "planner";

@@ -20,8 +20,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         if (!back || encode_evaluation(*back) != again)
             std::abort();
     }
-    if (auto bound = decode_robot_bound(bytes))
-        if (!valid_plan_cost(*bound))
+    if (auto bound = decode_robot_bound(bytes)) {
+        if (!valid_plan_cost(bound->cost) || (bound->ie_floor && !valid_ie(*bound->ie_floor)))
             std::abort();
+        auto back = decode_robot_bound(encode_robot_bound(*bound));
+        if (!back || back->cost != bound->cost || back->ie_floor != bound->ie_floor)
+            std::abort();
+    }
     return 0;
 }

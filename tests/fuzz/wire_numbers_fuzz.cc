@@ -52,6 +52,7 @@ void evaluation(const evaluation_t &e) {
         design::JobAnswer answer = wire::job_answer(job, e);
         if (kind == job_t::KIND_ROBOT_BOUND) {
             require(!answer.robot_bound || cost_or_none(*answer.robot_bound));
+            require(!answer.ie_floor || (!std::isnan(*answer.ie_floor) && *answer.ie_floor >= 0));
             continue;
         }
         const design::TaskExplicability &t = answer.explicability;

@@ -4,6 +4,7 @@
 #include "design/model/lifted_key.h"
 #include "ground/grounder.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace envdesign::design {
@@ -50,6 +51,13 @@ double ie_floor(double robot_optimal_cost, double human_optimal_cost, Distance d
         robot_optimal_cost <= human_optimal_cost)
         return least_ie(distance);
     return inexplicability(robot_optimal_cost, human_optimal_cost, distance);
+}
+
+bool ie_floors_hold(const DesignProblem &problem) {
+    return std::all_of(problem.tasks.begin(), problem.tasks.end(), [&](const DesignTask &t) {
+        return human_costs_dominate(problem.robot_domain, t.robot_problem, problem.human_domain,
+                                    t.human_problem);
+    });
 }
 
 TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,

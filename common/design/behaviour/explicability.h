@@ -38,6 +38,8 @@ double least_ie(Distance distance);
 // people more than c_H*, so an explanation tells at least one difference (the objective's
 // bound takes the cheaper of the two). The least IE when c_R* <= c_H* or either is unknown.
 double ie_floor(double robot_optimal_cost, double human_optimal_cost, Distance distance);
+// Whether ie_floor holds in every task of `problem` (human_costs_dominate in each).
+bool ie_floors_hold(const DesignProblem &problem);
 
 // Compiles and grounds P_mod and P_H of `models` and plans both through `planner`.
 // `solve_human_anyway`: also solve P_H when P_mod has no plan (for reporting c_H*).

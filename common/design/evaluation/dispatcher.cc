@@ -1,6 +1,12 @@
 #include "design/evaluation/dispatcher.h"
 
+#include "design/behaviour/explicability.h"
+
 namespace envdesign::design {
+
+bool asks_robot_bounds(const DesignProblem &problem) {
+    return problem.weights.kappa > 0 || ie_floors_hold(problem);
+}
 
 Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks,
                        bool robot_bounds, const EvaluationCallbacks &callbacks)

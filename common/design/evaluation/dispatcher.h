@@ -11,6 +11,7 @@
 // EXPLICABILITY job. Configurations are served in batch order;
 // while one waits for answers, the next one's jobs go out.
 
+#include "design/design_problem.h"
 #include "design/evaluation/evaluator.h"
 
 #include <optional>
@@ -19,6 +20,10 @@
 namespace envdesign::design {
 
 enum class JobKind { ROBOT_BOUND, EXPLICABILITY };
+
+// Whether ROBOT_BOUND jobs are worth asking for `problem`: its objective weighs the robot's
+// cost (kappa > 0), or the answers carry IE floors (ie_floors_hold, explicability.h).
+bool asks_robot_bounds(const DesignProblem &problem);
 
 struct Job {
     int configuration = 0; // index into the batch

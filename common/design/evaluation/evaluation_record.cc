@@ -163,20 +163,30 @@ std::optional<TaskExplicability> decode_evaluation(const std::string &bytes) {
     return e;
 }
 
-std::string encode_robot_bound(double bound) {
+std::string encode_robot_bound(const RobotBound &bound) {
     Writer w;
     w.byte(RECORD_VERSION);
     w.byte(BOUND_TAG);
-    w.real(bound);
+    w.real(bound.cost);
+    if (bound.ie_floor) { // optional, appended: older records end after the cost
+        w.byte(1);
+        w.real(*bound.ie_floor);
+    }
     return w.take();
 }
 
-std::optional<double> decode_robot_bound(const std::string &bytes) {
+std::optional<RobotBound> decode_robot_bound(const std::string &bytes) {
     Reader r(bytes);
     if (r.byte() != RECORD_VERSION || r.byte() != BOUND_TAG)
         return std::nullopt;
-    double bound = r.real();
-    if (!r.ok() || !valid_plan_cost(bound))
+    RobotBound bound{r.real(), std::nullopt};
+    if (!r.at_end()) {
+        if (r.byte() != 1)
+            return std::nullopt;
+        bound.ie_floor = r.real();
+    }
+    if (!r.ok() || !r.at_end() || !valid_plan_cost(bound.cost) ||
+        (bound.ie_floor && !valid_ie(*bound.ie_floor)))
         return std::nullopt;
     return bound;
 }

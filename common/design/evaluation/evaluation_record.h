@@ -27,8 +27,14 @@ store::Digest record_name(RecordKind kind, const TaskKey &scope, const Configura
 std::string encode_evaluation(const TaskExplicability &evaluation);
 std::optional<TaskExplicability> decode_evaluation(const std::string &bytes); // nullopt: bad
 
-std::string encode_robot_bound(double bound);
-std::optional<double> decode_robot_bound(const std::string &bytes);
+// A ROBOT_BOUND answer (dispatcher.h): c_R* under a configuration, and the task's IE floor
+// where one was argued (records written before floors have none).
+struct RobotBound {
+    double cost = 0;
+    std::optional<double> ie_floor;
+};
+std::string encode_robot_bound(const RobotBound &bound);
+std::optional<RobotBound> decode_robot_bound(const std::string &bytes); // nullopt: bad
 
 // The first 128 bits of SHA-256(text): the keys of evaluation_store.h.
 TaskKey digest_key(const std::string &text);

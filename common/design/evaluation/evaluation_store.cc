@@ -69,8 +69,8 @@ void EvaluationStore::keep(const Configuration &configuration, const TaskKey &ta
     entries_.insert_or_assign(key, evaluation);
 }
 
-std::optional<double> EvaluationStore::find_robot_bound(const Configuration &configuration,
-                                                        const TaskKey &task) const {
+std::optional<RobotBound> EvaluationStore::find_robot_bound(const Configuration &configuration,
+                                                            const TaskKey &task) const {
     std::lock_guard lock(mutex_);
     auto it = robot_bounds_.find({configuration, task});
     if (it != robot_bounds_.end())
@@ -88,7 +88,7 @@ std::optional<double> EvaluationStore::find_robot_bound(const Configuration &con
 }
 
 void EvaluationStore::keep_robot_bound(const Configuration &configuration, const TaskKey &task,
-                                       double bound) {
+                                       const RobotBound &bound) {
     std::lock_guard lock(mutex_);
     auto key = std::make_pair(configuration, task);
     if (db_ && !robot_bounds_.count(key))

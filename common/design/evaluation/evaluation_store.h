@@ -24,6 +24,7 @@
 // Thread-safe.
 
 #include "design/behaviour/explicability.h"
+#include "design/evaluation/evaluation_record.h"
 #include "design/model/configuration.h"
 #include "design/model/ground_key.h"
 
@@ -57,10 +58,11 @@ public:
     void keep(const Configuration &configuration, const TaskKey &task,
               const TaskExplicability &evaluation);
     // The robot's optimal cost under a configuration (a lower bound the search uses to
-    // abandon configurations early; INF: the robot has no plan).
-    std::optional<double> find_robot_bound(const Configuration &configuration,
-                                           const TaskKey &task) const;
-    void keep_robot_bound(const Configuration &configuration, const TaskKey &task, double bound);
+    // abandon configurations early; INF: the robot has no plan), with the task's IE floor.
+    std::optional<RobotBound> find_robot_bound(const Configuration &configuration,
+                                               const TaskKey &task) const;
+    void keep_robot_bound(const Configuration &configuration, const TaskKey &task,
+                          const RobotBound &bound);
     // Forgets every evaluation and bound of one task, in memory (records in the file stay
     // true: they are named by content).
     void forget(const TaskKey &task);
@@ -78,7 +80,7 @@ private:
     mutable std::mutex mutex_;
     // Mutable: find() copies what it read from the file here.
     mutable std::map<std::pair<Configuration, TaskKey>, TaskExplicability> entries_;
-    mutable std::map<std::pair<Configuration, TaskKey>, double> robot_bounds_;
+    mutable std::map<std::pair<Configuration, TaskKey>, RobotBound> robot_bounds_;
 };
 
 } // namespace envdesign::design

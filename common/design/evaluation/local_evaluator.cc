@@ -3,11 +3,9 @@
 #include "design/behaviour/evaluate_task.h"
 #include "design/behaviour/explicability.h"
 #include "design/evaluation/dispatcher.h"
-#include "design/model/compilation.h"
 
 #include "concurrency/blocking_queue.h"
 
-#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <thread>
@@ -33,20 +31,12 @@ struct Channel {
     concurrency::BlockingQueue<Answer> answers; // never closed: each job sends one
 };
 
-// Whether ROBOT_BOUND jobs can answer IE floors for `problem` (local_evaluator.h).
-bool floors_apply(const DesignProblem &problem) {
-    return std::all_of(problem.tasks.begin(), problem.tasks.end(), [&](const DesignTask &t) {
-        return human_costs_dominate(problem.robot_domain, t.robot_problem, problem.human_domain,
-                                    t.human_problem);
-    });
-}
-
 } // namespace
 
 LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
                                planning::PlannerOptions options)
     : problem_(problem), workers_(std::max(1, workers)), cache_(std::move(options)),
-      ie_floors_(floors_apply(problem)), robot_bounds_(problem.weights.kappa > 0 || ie_floors_) {}
+      ie_floors_(ie_floors_hold(problem)), robot_bounds_(asks_robot_bounds(problem)) {}
 
 TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
                                                 const Deadline &deadline) {
@@ -78,8 +68,8 @@ std::optional<double> LocalEvaluator::ie_floor(const Configuration &configuratio
                             problem_.weights.distance);
 }
 
-JobAnswer LocalEvaluator::run(const Configuration &configuration, const Job &job,
-                              const Deadline &deadline) {
+JobAnswer LocalEvaluator::answer(const Configuration &configuration, const Job &job,
+                                 const Deadline &deadline) {
     JobAnswer answer{job, std::nullopt, std::nullopt, {}};
     if (job.kind == JobKind::ROBOT_BOUND) {
         answer.robot_bound = robot_cost_bound(configuration, job.task, deadline);
@@ -99,7 +89,7 @@ void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
             while (auto job = channel.jobs.pop()) {
                 Answer a{{*job, std::nullopt, std::nullopt, {}}, nullptr};
                 try {
-                    a.answer = run(batch[job->configuration].configuration, *job, deadline);
+                    a.answer = answer(batch[job->configuration].configuration, *job, deadline);
                 } catch (...) {
                     a.error = std::current_exception();
                 }

@@ -37,9 +37,10 @@ public:
                                    std::optional<double> robot_bound, const Deadline &deadline);
     PlanCache &planner() { return cache_; }
 
-private:
-    JobAnswer run(const Configuration &configuration, const Job &job, const Deadline &deadline);
+    // The answer to one job, as a worker (or a planner service) computes it.
+    JobAnswer answer(const Configuration &configuration, const Job &job, const Deadline &deadline);
 
+private:
     const DesignProblem &problem_;
     int workers_;
     PlanCache cache_;

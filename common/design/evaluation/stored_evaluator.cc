@@ -29,7 +29,8 @@ void StoredEvaluator::keep_task(const Configuration &configuration, int task,
     store_.keep(configuration, key(task), evaluation);
 }
 
-void StoredEvaluator::keep_robot_bound(const Configuration &configuration, int task, double bound) {
+void StoredEvaluator::keep_robot_bound(const Configuration &configuration, int task,
+                                       const RobotBound &bound) {
     store_.keep_robot_bound(configuration, key(task), bound);
 }
 
@@ -47,12 +48,17 @@ ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluatio
     int tasks = static_cast<int>(problem_.tasks.size());
     e.tasks.resize(tasks);
     e.robot_cost_bounds.resize(tasks);
+    e.ie_floors.resize(tasks);
     e.status = EvaluationStatus::COMPLETE;
     for (int t = 0; t < tasks; ++t) {
         if (!e.tasks[t])
             e.tasks[t] = find(e.configuration, t);
-        if (!e.robot_cost_bounds[t]) // the witness search bounds supersets with it
-            e.robot_cost_bounds[t] = store_.find_robot_bound(e.configuration, key(t));
+        if (!e.robot_cost_bounds[t]) { // the witness search bounds supersets with it
+            if (auto bound = store_.find_robot_bound(e.configuration, key(t))) {
+                e.robot_cost_bounds[t] = bound->cost;
+                e.ie_floors[t] = bound->ie_floor;
+            }
+        }
         if (!e.tasks[t])
             e.status = EvaluationStatus::LIMIT; // not complete
     }
@@ -70,8 +76,10 @@ void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation,
         if (evaluation.tasks[t] && !given(request.tasks, t))
             store_.keep(evaluation.configuration, key(t), *evaluation.tasks[t]);
         if (given(evaluation.robot_cost_bounds, t) && !given(request.robot_cost_bounds, t))
-            store_.keep_robot_bound(evaluation.configuration, key(t),
-                                    *evaluation.robot_cost_bounds[t]);
+            store_.keep_robot_bound(
+                evaluation.configuration, key(t),
+                {*evaluation.robot_cost_bounds[t],
+                 given(evaluation.ie_floors, t) ? evaluation.ie_floors[t] : std::nullopt});
     }
 }
 

@@ -53,7 +53,7 @@ public:
     // answer even if the process dies mid-configuration). Same thread as evaluate().
     void keep_task(const Configuration &configuration, int task,
                    const TaskExplicability &evaluation);
-    void keep_robot_bound(const Configuration &configuration, int task, double bound);
+    void keep_robot_bound(const Configuration &configuration, int task, const RobotBound &bound);
 
 private:
     const TaskKey &key(int task);

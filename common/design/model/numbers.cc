@@ -15,6 +15,8 @@ std::optional<std::string> number_problem(double value, NumberRange range) {
 
 bool valid_plan_cost(double cost) { return cost == INF || !number_problem(cost, PLAN_COST); }
 
+bool valid_ie(double ie) { return !std::isnan(ie) && ie >= 0; }
+
 std::optional<std::string> evaluation_problem(const TaskExplicability &e) {
     if (e.status != ExplicabilityStatus::SOLVED && e.status != ExplicabilityStatus::INEXPLICABLE)
         return "the evaluation is neither solved nor inexplicable";
@@ -23,7 +25,7 @@ std::optional<std::string> evaluation_problem(const TaskExplicability &e) {
         return "a plan cost is not a cost in [0, 2^31) or infinite";
     if (e.explanation && !valid_plan_cost(e.explanation->robot_optimal_cost))
         return "the explanation's robot cost is not a cost in [0, 2^31) or infinite";
-    if (std::isnan(e.ie) || e.ie < 0)
+    if (!valid_ie(e.ie))
         return "the IE is not a number >= 0";
     if (e.status == ExplicabilityStatus::INEXPLICABLE && e.ie != INF)
         return "an inexplicable evaluation with a finite IE";

@@ -36,6 +36,8 @@ std::optional<std::string> number_problem(double value, NumberRange range);
 
 // A plan cost: in PLAN_COST, or INF ("no plan").
 bool valid_plan_cost(double cost);
+// An IE: a number >= 0, INF included (no plan, or a gap exp overflows).
+bool valid_ie(double ie);
 
 // The values of an evaluation received (wire) or read back (store): SOLVED or INEXPLICABLE,
 // costs valid plan costs, IE not NaN and at least 0, INEXPLICABLE with an infinite IE, a
