@@ -216,7 +216,7 @@ TEST(IeFloor, HumanCostsDominateOnlyWhereEveryActionCostsPeopleAtLeastTheRobots)
                                       unit.human_problem)); // 1 a step against road costs
     EXPECT_TRUE(human_costs_dominate(unit.robot_domain, unit.robot_problem, unit.human_domain,
                                      unit.robot_problem)); // 1 a step both
-    pddl::Domain dearer = unit.human_domain; // people charge 2 a step, the robot 1
+    pddl::Domain dearer = unit.human_domain;               // people charge 2 a step, the robot 1
     dearer.actions[0].costs = {pddl::CostExpression{2, std::nullopt}};
     pddl::Problem metric = unit.robot_problem;
     metric.minimize_total_cost = true;
@@ -235,8 +235,8 @@ TEST(IeFloor, IsTheIeOfTheMostExplicablePlanOnThePapersBlocksworld) {
     m.human_domain = pddl::parse_domain_file(dir + "domain-human.pddl");
     m.robot_problem = pddl::parse_problem_file(dir + "02/init-4-1-goal-4-2.pddl", m.robot_domain);
     m.human_problem = m.robot_problem;
-    ASSERT_TRUE(human_costs_dominate(m.robot_domain, m.robot_problem, m.human_domain,
-                                     m.human_problem));
+    ASSERT_TRUE(
+        human_costs_dominate(m.robot_domain, m.robot_problem, m.human_domain, m.human_problem));
     PlanCache planner(planning::PlannerOptions{});
     PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
     TaskExplicability e = evaluate(m);
