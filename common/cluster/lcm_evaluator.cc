@@ -1,5 +1,6 @@
 #include "cluster/lcm_evaluator.h"
 
+#include "design/behaviour/explicability.h"
 #include "envdesign/evaluation_t.hpp"
 #include "wire/job_messages.h"
 
@@ -21,7 +22,7 @@ LcmEvaluator::LcmEvaluator(const design::DesignProblem &problem, JobRouter &rout
                            double grace_s)
     : problem_(problem), router_(router), request_(std::move(request)), cancelled_(cancelled),
       grace_s_(grace_s), robot_bounds_(design::asks_robot_bounds(problem)),
-      owner_(router.open(inbox_, request_.client)) {}
+      ie_floors_(design::ie_floors_hold(problem)), owner_(router.open(inbox_, request_.client)) {}
 
 LcmEvaluator::~LcmEvaluator() { router_.close(owner_); }
 
@@ -29,7 +30,7 @@ void LcmEvaluator::evaluate(const std::vector<design::ConfigurationEvaluation> &
                             const design::Deadline &deadline,
                             const design::EvaluationCallbacks &callbacks) {
     design::Dispatcher dispatcher(configurations, static_cast<int>(problem_.tasks.size()),
-                                  robot_bounds_, callbacks);
+                                  robot_bounds_, ie_floors_, callbacks);
     Batch batch{configurations, dispatcher, {}};
     std::optional<Clock::time_point> give_up_at;
     while (true) {

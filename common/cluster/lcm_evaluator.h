@@ -92,6 +92,7 @@ private:
     const std::atomic<bool> &cancelled_;
     double grace_s_;
     bool robot_bounds_;
+    bool ie_floors_;
     Inbox inbox_;
     std::uint64_t owner_;
     design::EvaluatorCounters counters_;

@@ -39,6 +39,8 @@ envdesign::job_t job_message(const design::Job &job, const design::Configuration
     m.num_modifications = static_cast<std::int16_t>(m.modifications.size());
     m.heuristic = heuristic;
     m.time_limit_s = deadline.remaining_seconds();
+    m.has_robot_bound = job.robot_bound.has_value();
+    m.robot_bound = job.robot_bound.value_or(0);
     return m;
 }
 
@@ -60,6 +62,10 @@ std::optional<std::string> job_problem(const envdesign::job_t &job,
         return "unknown heuristic " + std::to_string(job.heuristic);
     if (auto why = design::number_problem(job.time_limit_s, design::TIME_LIMIT_S))
         return "the time limit " + *why;
+    if (job.has_robot_bound && job.kind != envdesign::job_t::KIND_ROBOT_BOUND)
+        return "a robot bound on a job that is not KIND_ROBOT_BOUND";
+    if (job.has_robot_bound && !design::valid_plan_cost(job.robot_bound))
+        return "the robot bound is not a cost in [0, 2^31) or infinite";
     return std::nullopt;
 }
 
@@ -68,9 +74,13 @@ design::Configuration configuration_of(const envdesign::job_t &job) {
 }
 
 design::Job job_of(const envdesign::job_t &job) {
-    return {0, job.task,
-            job.kind == envdesign::job_t::KIND_ROBOT_BOUND ? design::JobKind::ROBOT_BOUND
-                                                           : design::JobKind::EXPLICABILITY};
+    design::Job out{0, job.task,
+                    job.kind == envdesign::job_t::KIND_ROBOT_BOUND ? design::JobKind::ROBOT_BOUND
+                                                                   : design::JobKind::EXPLICABILITY,
+                    std::nullopt};
+    if (job.has_robot_bound)
+        out.robot_bound = job.robot_bound;
+    return out;
 }
 
 std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t kind) {

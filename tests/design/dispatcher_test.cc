@@ -30,7 +30,7 @@ TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
         return sum > 10;
     };
     r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
-    Dispatcher d({unevaluated({}), unevaluated({0})}, 2, true, r.callbacks);
+    Dispatcher d({unevaluated({}), unevaluated({0})}, 2, true, false, r.callbacks);
     auto answer_bound = [&](Job job, double bound) { d.receive({job, bound, std::nullopt, {}}); };
     // Both bounds of {} go out before anything else of it; {0}'s follow while they are away.
     std::vector<Job> sent;
@@ -62,7 +62,7 @@ TEST(Dispatcher, BoundsFirstThenAbandonBeforeAnyCompiledTask) {
 TEST(Dispatcher, WithoutBoundsOnlyCompiledTasks) {
     Recorder r;
     r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
-    Dispatcher d({unevaluated({})}, 1, false, r.callbacks);
+    Dispatcher d({unevaluated({})}, 1, false, false, r.callbacks);
     Job job = *d.next_job();
     EXPECT_EQ(job.kind, JobKind::EXPLICABILITY);
     d.finish_rest(); // out of time while the job is away: reported when it is back
@@ -86,7 +86,7 @@ TEST(Dispatcher, KnownTasksAndBoundsGetNoJob) {
     partial.robot_cost_bounds = {std::nullopt, 4.0, std::nullopt};
     ConfigurationEvaluation full = unevaluated({1});
     full.tasks = {known, known, known};
-    Dispatcher d({full, partial}, 3, true, r.callbacks);
+    Dispatcher d({full, partial}, 3, true, false, r.callbacks);
     std::vector<Job> sent;
     while (auto job = d.next_job())
         sent.push_back(*job);
@@ -121,7 +121,7 @@ TEST(Dispatcher, AnIeFloorAbandonsBeforeTheOtherBounds) {
         return false;
     };
     r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
-    Dispatcher d({unevaluated({})}, 3, true, r.callbacks);
+    Dispatcher d({unevaluated({})}, 3, true, false, r.callbacks);
     Job first = *d.next_job(); // one worker: one job at a time
     EXPECT_EQ(first.kind, JobKind::ROBOT_BOUND);
     d.receive({first, 7.0, std::nullopt, {}}); // no floor: the next bound goes out
@@ -134,6 +134,32 @@ TEST(Dispatcher, AnIeFloorAbandonsBeforeTheOtherBounds) {
     EXPECT_EQ(r.done[0].ie_floors[1], 403.0);
     EXPECT_FALSE(r.done[0].ie_floors[0]);
     EXPECT_FALSE(d.next_job());
+}
+
+// With IE floors, a robot bound the search inherited (robot_bounds.h) still gets a job: it
+// carries the bound, the answer keeps it and adds the floor. An infinite bound gets none.
+TEST(Dispatcher, AGivenBoundTravelsWithItsFloorJob) {
+    Recorder r;
+    r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
+    ConfigurationEvaluation e = unevaluated({2});
+    e.robot_cost_bounds = {22.0, INF};
+    Dispatcher d({e}, 2, true, true, r.callbacks);
+    Job job = *d.next_job();
+    EXPECT_EQ(job.kind, JobKind::ROBOT_BOUND);
+    EXPECT_EQ(job.task, 0);
+    ASSERT_TRUE(job.robot_bound);
+    EXPECT_EQ(*job.robot_bound, 22.0);
+    EXPECT_FALSE(d.next_job()); // task 1's infinite bound needs no floor
+    d.receive({job, std::nullopt, 54.6, {}});
+    std::vector<Job> sent;
+    while (auto next = d.next_job())
+        sent.push_back(*next);
+    ASSERT_EQ(sent.size(), 2u);
+    for (const auto &j : sent)
+        d.receive({j, std::nullopt, std::nullopt, solved(1)});
+    ASSERT_EQ(r.done.size(), 1u);
+    EXPECT_EQ(r.done[0].robot_cost_bounds[0], 22.0);
+    EXPECT_EQ(r.done[0].ie_floors[0], 54.6);
 }
 
 } // namespace

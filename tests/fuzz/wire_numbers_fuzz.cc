@@ -91,6 +91,10 @@ void job(const job_t &m) {
             m.heuristic <= design_request_t::HEURISTIC_BLIND);
     require(std::isfinite(m.time_limit_s) && m.time_limit_s >= 0 &&
             m.time_limit_s <= design::TIME_LIMIT_S.high);
+    if (m.has_robot_bound) // only a ROBOT_BOUND job's, a plan cost or "no plan"
+        require(m.kind == job_t::KIND_ROBOT_BOUND &&
+                (m.robot_bound == INFINITY ||
+                 (m.robot_bound >= 0 && m.robot_bound <= design::PLAN_COST.high)));
     // The planner's deadline from it (UBSan: no overflow in the conversion).
     design::Deadline deadline = design::Deadline::in(m.time_limit_s);
     require(deadline.limited() == (m.time_limit_s > 0));

@@ -2,6 +2,8 @@
 
 #include "design/behaviour/explicability.h"
 
+#include <cmath>
+
 namespace envdesign::design {
 
 bool asks_robot_bounds(const DesignProblem &problem) {
@@ -9,7 +11,7 @@ bool asks_robot_bounds(const DesignProblem &problem) {
 }
 
 Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks,
-                       bool robot_bounds, const EvaluationCallbacks &callbacks)
+                       bool robot_bounds, bool ie_floors, const EvaluationCallbacks &callbacks)
     : callbacks_(callbacks), robot_bounds_(robot_bounds), state_(batch), progress_(batch.size()) {
     for (std::size_t c = 0; c < state_.size(); ++c) {
         ConfigurationEvaluation &e = state_[c];
@@ -21,7 +23,9 @@ Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int ta
             if (e.tasks[t])
                 continue;
             progress_[c].tasks_needed.push_back(t);
-            if (robot_bounds_ && !e.robot_cost_bounds[t])
+            const auto &given = e.robot_cost_bounds[t];
+            bool floor_needed = ie_floors && given && std::isfinite(*given) && !e.ie_floors[t];
+            if (robot_bounds_ && (!given || floor_needed))
                 progress_[c].bounds_needed.push_back(t);
         }
     }
@@ -50,7 +54,8 @@ std::optional<Job> Dispatcher::next_job_of(int c) {
     int bounds = static_cast<int>(p.bounds_needed.size());
     if (p.bounds_sent < bounds) {
         ++p.in_flight;
-        return Job{c, p.bounds_needed[p.bounds_sent++], JobKind::ROBOT_BOUND};
+        int task = p.bounds_needed[p.bounds_sent++];
+        return Job{c, task, JobKind::ROBOT_BOUND, state_[c].robot_cost_bounds[task]};
     }
     if (p.bounds_known < bounds || p.tasks_sent == needed(p))
         return std::nullopt; // waiting for answers
@@ -71,7 +76,8 @@ void Dispatcher::receive(JobAnswer a) {
     --p.in_flight;
     if (a.job.kind == JobKind::ROBOT_BOUND) {
         ++p.bounds_known;
-        state_[c].robot_cost_bounds[a.job.task] = a.robot_bound;
+        if (a.robot_bound) // else keep a given one
+            state_[c].robot_cost_bounds[a.job.task] = a.robot_bound;
         state_[c].ie_floors[a.job.task] = a.ie_floor;
     } else if (a.explicability.status == ExplicabilityStatus::LIMIT) {
         stop(c, EvaluationStatus::LIMIT);

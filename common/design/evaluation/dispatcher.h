@@ -29,6 +29,10 @@ struct Job {
     int configuration = 0; // index into the batch
     int task = 0;
     JobKind kind = JobKind::EXPLICABILITY;
+    // ROBOT_BOUND: a lower bound on c_R* already known (the configuration grew from one whose
+    // robot model it only restricts); the answer gives it back with the IE floor it yields,
+    // and only the human's model is solved.
+    std::optional<double> robot_bound;
 };
 
 struct JobAnswer {
@@ -40,10 +44,12 @@ struct JobAnswer {
 
 class Dispatcher {
 public:
-    // `robot_bounds`: whether to ask for ROBOT_BOUND jobs at all (worth it only when the
-    // robot's cost is weighted). `callbacks` must outlive the dispatcher.
+    // `robot_bounds`: whether to ask for ROBOT_BOUND jobs at all (asks_robot_bounds);
+    // `ie_floors`: whether their answers carry IE floors (ie_floors_hold), so that a task whose
+    // robot bound is given is still asked for its floor. `callbacks` must outlive the
+    // dispatcher.
     Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks, bool robot_bounds,
-               const EvaluationCallbacks &callbacks);
+               bool ie_floors, const EvaluationCallbacks &callbacks);
 
     // The next job to send, or nullopt when nothing can be sent before more answers come.
     std::optional<Job> next_job();

@@ -72,7 +72,8 @@ JobAnswer LocalEvaluator::answer(const Configuration &configuration, const Job &
                                  const Deadline &deadline) {
     JobAnswer answer{job, std::nullopt, std::nullopt, {}};
     if (job.kind == JobKind::ROBOT_BOUND) {
-        answer.robot_bound = robot_cost_bound(configuration, job.task, deadline);
+        answer.robot_bound =
+            job.robot_bound ? job.robot_bound : robot_cost_bound(configuration, job.task, deadline);
         answer.ie_floor = ie_floor(configuration, job.task, answer.robot_bound, deadline);
     } else
         answer.explicability = evaluate_task(configuration, job.task, deadline);
@@ -81,7 +82,8 @@ JobAnswer LocalEvaluator::answer(const Configuration &configuration, const Job &
 
 void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
                               const Deadline &deadline, const EvaluationCallbacks &callbacks) {
-    Dispatcher dispatcher(batch, static_cast<int>(problem_.tasks.size()), robot_bounds_, callbacks);
+    Dispatcher dispatcher(batch, static_cast<int>(problem_.tasks.size()), robot_bounds_, ie_floors_,
+                          callbacks);
     Channel channel;
     std::vector<std::thread> threads;
     for (int i = 0; i < workers_; ++i) {

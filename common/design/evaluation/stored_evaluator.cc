@@ -53,8 +53,11 @@ ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluatio
     for (int t = 0; t < tasks; ++t) {
         if (!e.tasks[t])
             e.tasks[t] = find(e.configuration, t);
-        if (!e.robot_cost_bounds[t]) { // the witness search bounds supersets with it
-            if (auto bound = store_.find_robot_bound(e.configuration, key(t))) {
+        // The witness search bounds supersets with it; a bound the search inherited
+        // (robot_bounds.h) gives way to a stored one at least as great, with its floor.
+        if (!e.ie_floors[t]) {
+            auto bound = store_.find_robot_bound(e.configuration, key(t));
+            if (bound && (!e.robot_cost_bounds[t] || *e.robot_cost_bounds[t] <= bound->cost)) {
                 e.robot_cost_bounds[t] = bound->cost;
                 e.ie_floors[t] = bound->ie_floor;
             }
@@ -75,7 +78,9 @@ void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation,
     for (int t = 0; t < tasks; ++t) {
         if (evaluation.tasks[t] && !given(request.tasks, t))
             store_.keep(evaluation.configuration, key(t), *evaluation.tasks[t]);
-        if (given(evaluation.robot_cost_bounds, t) && !given(request.robot_cost_bounds, t))
+        bool answered = !given(request.robot_cost_bounds, t) ||
+                        (given(evaluation.ie_floors, t) && !given(request.ie_floors, t));
+        if (given(evaluation.robot_cost_bounds, t) && answered)
             store_.keep_robot_bound(
                 evaluation.configuration, key(t),
                 {*evaluation.robot_cost_bounds[t],

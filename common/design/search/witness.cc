@@ -1,6 +1,7 @@
 #include "design/search/witness.h"
 
 #include "design/behaviour/behaviour.h"
+#include "design/search/gated_twins.h"
 
 #include <algorithm>
 #include <array>
@@ -48,18 +49,6 @@ SpecLiteral literal_of(const pddl::SExpr &e) {
     l.atom = atom->to_string();
     if (atom->is_list && !atom->items.empty() && !atom->items[0].is_list)
         l.predicate = atom->items[0].symbol;
-    return l;
-}
-
-pddl::Literal as_literal(const pddl::SExpr &e) {
-    pddl::Literal l;
-    const pddl::SExpr *atom = &e;
-    if (e.has_head("not") && e.items.size() == 2) {
-        l.negated = true;
-        atom = &e.items[1];
-    }
-    for (std::size_t i = 0; atom->is_list && i < atom->items.size(); ++i)
-        (i == 0 ? l.atom.predicate : l.atom.args.emplace_back()) = atom->items[i].to_string();
     return l;
 }
 
@@ -177,6 +166,18 @@ std::string ground_atom(const pddl::Atom &atom, const pddl::Action &action,
     return out + ")";
 }
 
+pddl::Literal as_literal(const pddl::SExpr &e) {
+    pddl::Literal l;
+    const pddl::SExpr *atom = &e;
+    if (e.has_head("not") && e.items.size() == 2) {
+        l.negated = true;
+        atom = &e.items[1];
+    }
+    for (std::size_t i = 0; atom->is_list && i < atom->items.size(); ++i)
+        (i == 0 ? l.atom.predicate : l.atom.args.emplace_back()) = atom->items[i].to_string();
+    return l;
+}
+
 TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
     const std::array<Uses, 2> uses = predicate_uses(problem);
     for (int side : {ROBOT, HUMAN})
@@ -199,6 +200,10 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
                 }
             }
         }
+        // Gating (gated_twins.h) keeps c_R* from dropping, though not every plan valid: it
+        // bounds the robot's cost, not the witnesses.
+        if (!c.robot_restricting && gated_twin_restricting(problem, i, true))
+            c.robot_restricting = true;
         classes_.push_back(c);
     }
 }

@@ -43,16 +43,21 @@
 namespace envdesign::design {
 
 struct ModificationClass {
-    bool restricting = true;       // every edit is restricting
-    bool robot_restricting = true; // every edit of the robot's model is
-    bool edits_robot = false;      // it edits the robot's model at all
-    bool edits_human = false;      // it edits the human's model at all
+    bool restricting = true; // every edit is restricting
+    // The robot's optimal cost never drops with it: every edit of the robot's model is
+    // restricting, or they only gate (gated_twins.h).
+    bool robot_restricting = true;
+    bool edits_robot = false; // it edits the robot's model at all
+    bool edits_human = false; // it edits the human's model at all
     // Every edit only adds plans and never makes one dearer, whatever else is added (the
     // mirror of the restricting rules: more atoms of a predicate nothing reads negatively,
     // fewer of one nothing reads positively, a precondition or goal removed). A new lane.
     bool adding = true;
     std::string why_not; // the first edit that is not restricting, for the result
 };
+
+// An edit's literal as written: (not (p ?x a)) -> p(?x, a) negated. Names are not checked.
+pddl::Literal as_literal(const pddl::SExpr &e);
 
 // "(move c00 c10)" -> {"move", "c00", "c10"}
 std::vector<std::string> words_of(const std::string &step);
@@ -78,6 +83,13 @@ public:
 
     const ModificationClass &of(int modification) const { return classes_[modification]; }
     int size() const { return static_cast<int>(classes_.size()); }
+    // Per modification, whether it never lowers c_R* (ModificationClass::robot_restricting).
+    std::vector<bool> robot_restricting() const {
+        std::vector<bool> out;
+        for (const auto &c : classes_)
+            out.push_back(c.robot_restricting);
+        return out;
+    }
 
     // The restricting modifications that touch the witnesses of `evaluation`, an evaluation
     // of task `task` under `configuration`. What a step relies on is read from the spec's

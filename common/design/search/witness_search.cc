@@ -1,6 +1,7 @@
 #include "design/search/witness_search.h"
 
 #include "design/behaviour/behaviour.h"
+#include "design/search/robot_bounds.h"
 #include "design/search/witness_bound.h"
 #include "design/search/witness_learning.h"
 
@@ -65,7 +66,7 @@ public:
                   const DesignSearchOptions &options,
                   const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          index_(problem), bound_(problem, index_),
+          index_(problem), bound_(problem, index_), robot_bound_memory_(index_.robot_restricting()),
           ranking_(options.ranking, options.ranking_all ? Padding::LISTED : Padding::LEFT_OUT),
           learner_(problem, evaluator, options, index_, bound_, result_, ranking_,
                    [this] { report(); }),
@@ -215,6 +216,7 @@ private:
                 finish(batch[i], std::move(known));
                 continue;
             }
+            robot_bound_memory_.inherit(batch[i].configuration, batch[i].robot_bounds);
             ConfigurationEvaluation r = unevaluated(batch[i].configuration);
             r.robot_cost_bounds = batch[i].robot_bounds;
             r.tasks.resize(batch[i].tasks.size());
@@ -264,6 +266,7 @@ private:
             return;
         }
         ++done_;
+        robot_bound_memory_.remember(node.configuration, e.robot_cost_bounds);
         if (e.status == EvaluationStatus::CUT_OFF) {
             ++counters.configurations_abandoned;
             if (grow_without_witnesses_.erase(node.configuration) > 0) {
@@ -335,7 +338,7 @@ private:
                     child.tasks[t] = r && k.restricting
                                          ? bound_.equally_cheap(t, *r, m, child.configuration)
                                          : nullptr;
-                if (k.edits_robot)
+                if (!k.robot_restricting) // else c_R* only rises: the parent's bound holds
                     child.robot_bounds[t].reset();
                 if (!k.restricting)
                     child.explicable_floor[t] = 0;
@@ -427,6 +430,7 @@ private:
     const std::function<void(const SearchProgress &)> &progress_;
     TouchIndex index_;
     witness::SupersetBound bound_;
+    RobotBoundMemory robot_bound_memory_; // for children queued before their parent is known
     DesignResult result_;
     Ranking ranking_; // the N best (options.ranking)
     witness::DesignLearner learner_;
