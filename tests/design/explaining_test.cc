@@ -7,6 +7,7 @@
 #include "design/evaluation/evaluation_record.h"
 #include "design/evaluation/local_evaluator.h"
 #include "design/search/design_search.h"
+#include "every_configuration.h"
 #include "example_paths.h"
 #include "explaining_generator.h"
 #include "pddl/parser.h"
@@ -191,6 +192,7 @@ TEST(ExplainingRecord, StoredEvaluationsKeepTheExplanation) {
 // blocked precondition for people (HUMAN).
 
 using testing::Dice;
+using testing::every_configuration;
 using testing::GeneratedPair;
 
 Edit edit(EditKind kind, Model model, const std::string &action, const std::string &text) {
@@ -275,31 +277,6 @@ DesignProblem generated_problem(unsigned seed, Mods mods = Mods::ANY) {
     w.behaviour = RobotBehaviour::EXPLAINING;
     w.explanation_cost = std::vector<double>{0, 0.2, 1, 3, 10}[d.below(5)];
     return p;
-}
-
-// Every configuration evaluated in full, no bound: the reference.
-RankedDesign every_configuration(const DesignProblem &p, int &explained) {
-    LocalEvaluator evaluator(p, 1);
-    int n = static_cast<int>(p.modifications.size());
-    RankedDesign best;
-    bool first = true;
-    for (unsigned mask = 0; mask < (1u << n); ++mask) {
-        Configuration c;
-        for (int i = 0; i < n; ++i)
-            if (mask & (1u << i))
-                c.push_back(i);
-        std::vector<TaskExplicability> tasks;
-        for (std::size_t t = 0; t < p.tasks.size(); ++t) {
-            tasks.push_back(evaluator.evaluate_task(c, static_cast<int>(t), Deadline{}));
-            explained += choose_behaviour(p.weights, tasks.back()).explained;
-        }
-        double cost = design_cost(p, c);
-        RankedDesign r{objective_of(p, cost, tasks).value, cost, c};
-        if (first || ranks_before(r, best))
-            best = r;
-        first = false;
-    }
-    return best;
 }
 
 bool proven_by_the_phase(const DesignResult &r) {

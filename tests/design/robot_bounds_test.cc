@@ -31,11 +31,6 @@ TEST(RobotBoundMemory, InheritsOnlyAcrossRobotRestrictingModifications) {
     Bounds kept{20.0, 1.0}; // a greater bound already known stays
     memory.inherit({0, 2}, kept);
     EXPECT_EQ(kept, (Bounds{20.0, 9.0}));
-
-    memory.forget_below(1);
-    Bounds forgotten;
-    memory.inherit({2}, forgotten);
-    EXPECT_TRUE(forgotten.empty());
 }
 
 } // namespace

@@ -1,8 +1,6 @@
 #include "design/search/exhaustive_search.h"
 
 #include "design/search/ranking.h"
-#include "design/search/robot_bounds.h"
-#include "design/search/witness.h"
 
 #include <algorithm>
 #include <chrono>
@@ -20,8 +18,7 @@ public:
     Search(const DesignProblem &problem, Evaluator &evaluator, const DesignSearchOptions &options,
            const std::function<void(const SearchProgress &)> &progress)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          ranking_(options.ranking, options.ranking_all ? Padding::LISTED : Padding::LEFT_OUT),
-          robot_bounds_(TouchIndex(problem).robot_restricting()) {
+          ranking_(options.ranking, options.ranking_all ? Padding::LISTED : Padding::LEFT_OUT) {
         int n = static_cast<int>(problem.modifications.size());
         max_size_ = options.max_design_size > 0 ? std::min(options.max_design_size, n) : n;
         std::vector<double> costs;
@@ -72,7 +69,6 @@ private:
                 consider(Configuration(combination), batch);
             } while (next_subset(combination, n));
             flush(batch);
-            robot_bounds_.forget_below(k);
         }
         return true;
     }
@@ -96,7 +92,6 @@ private:
                 if (consider(c, batch) || !costs_non_negative_)
                     expand.insert(c);
             flush(batch);
-            robot_bounds_.forget_below(k);
             if (k == max_size_)
                 break;
             layer = next_layer(expand);
@@ -157,10 +152,8 @@ private:
         if (batch.empty())
             return;
         std::vector<ConfigurationEvaluation> requests;
-        for (auto &c : batch) {
+        for (auto &c : batch)
             requests.push_back(unevaluated(std::move(c)));
-            robot_bounds_.inherit(requests.back().configuration, requests.back().robot_cost_bounds);
-        }
         EvaluationCallbacks callbacks;
         callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
             std::vector<const TaskExplicability *> known;
@@ -181,7 +174,6 @@ private:
             return;
         }
         ++done_;
-        robot_bounds_.remember(e.configuration, e.robot_cost_bounds);
         if (e.status == EvaluationStatus::CUT_OFF) {
             ++counters.configurations_abandoned;
             report();
@@ -219,7 +211,6 @@ private:
     bool costs_non_negative_ = true;
     DesignResult result_;
     Ranking ranking_; // the N best (options.ranking), pruned against as the best alone is
-    RobotBoundMemory robot_bounds_; // of the last layer: the next starts from them
     long long done_ = 0;
     long long progress_total_ = 0;
     long long generated_ = 0;

@@ -30,8 +30,4 @@ void RobotBoundMemory::inherit(const Configuration &configuration,
     }
 }
 
-void RobotBoundMemory::forget_below(std::size_t size) {
-    std::erase_if(known_, [size](const auto &entry) { return entry.first.size() < size; });
-}
-
 } // namespace envdesign::design

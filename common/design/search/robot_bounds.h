@@ -1,9 +1,11 @@
 #pragma once
 // c_R* never drops when a robot-restricting modification (witness.h: every edit restricts
-// the robot's model, or the modification only gates, gated_twins.h) is added. A search
-// remembers the robot bounds of the configurations it evaluated, and one configuration
+// the robot's model, or the modification only gates, gated_twins.h) is added. The witness
+// search remembers the robot bounds of the configurations it evaluated, and one configuration
 // larger starts from the greatest bound of its subsets that differ by such a modification:
-// the evaluator then solves only the human's model for the task's IE floor.
+// the evaluator then solves only the human's model for the task's IE floor. (The exhaustive
+// search, the cross-check and the explaining robot's fallback, asks for every bound: there a
+// full evaluation costs more than the robot's A*, and the exact bound abandons more.)
 
 #include "design/model/configuration.h"
 
@@ -26,9 +28,6 @@ public:
     // one robot-restricting modification smaller.
     void inherit(const Configuration &configuration,
                  std::vector<std::optional<double>> &bounds) const;
-    // Drops what configurations of fewer than `size` modifications gave (a search by layers
-    // reads only the last one).
-    void forget_below(std::size_t size);
 
 private:
     std::vector<bool> robot_restricting_;
