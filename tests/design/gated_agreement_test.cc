@@ -85,8 +85,7 @@ DesignProblem gated_problem(unsigned seed, const std::string &dir) {
         for (const auto &a : random_towers(d, false)) // a whole state: always reachable
             p << " " << a;
         p << "))) ";
-        std::string file =
-            write_text(dir + "/t" + std::to_string(t) + ".pddl", p.str());
+        std::string file = write_text(dir + "/t" + std::to_string(t) + ".pddl", p.str());
         spec << "task { name: \"t" << t << "\" problem: \"" << file
              << "\" probability: " << d.between(1, 3) << " }\n";
     }

@@ -65,7 +65,7 @@ std::optional<Job> Dispatcher::next_job_of(int c) {
         return std::nullopt;
     }
     ++p.in_flight;
-    return Job{c, p.tasks_needed[p.tasks_sent++], JobKind::EXPLICABILITY};
+    return Job{c, p.tasks_needed[p.tasks_sent++], JobKind::EXPLICABILITY, std::nullopt};
 }
 
 int Dispatcher::needed(const Progress &p) { return static_cast<int>(p.tasks_needed.size()); }

@@ -257,4 +257,16 @@ std::string edit_kind_name(EditKind kind) {
     return "edit";
 }
 
+pddl::Literal as_literal(const pddl::SExpr &e) {
+    pddl::Literal l;
+    const pddl::SExpr *atom = &e;
+    if (e.has_head("not") && e.items.size() == 2) {
+        l.negated = true;
+        atom = &e.items[1];
+    }
+    for (std::size_t i = 0; atom->is_list && i < atom->items.size(); ++i)
+        (i == 0 ? l.atom.predicate : l.atom.args.emplace_back()) = atom->items[i].to_string();
+    return l;
+}
+
 } // namespace envdesign::design

@@ -66,5 +66,7 @@ void apply_edit(const Edit &edit, pddl::Domain &domain, pddl::Problem *problem, 
 bool applies_to_robot(Model model);
 bool applies_to_human(Model model);
 std::string edit_kind_name(EditKind kind);
+// An edit's literal as written: (not (p ?x a)) -> p(?x, a) negated. Names are not checked.
+pddl::Literal as_literal(const pddl::SExpr &e);
 
 } // namespace envdesign::design

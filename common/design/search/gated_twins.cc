@@ -1,6 +1,6 @@
 #include "design/search/gated_twins.h"
 
-#include "design/search/witness.h"
+#include "design/model/edits.h"
 
 #include <algorithm>
 #include <map>

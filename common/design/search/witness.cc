@@ -166,18 +166,6 @@ std::string ground_atom(const pddl::Atom &atom, const pddl::Action &action,
     return out + ")";
 }
 
-pddl::Literal as_literal(const pddl::SExpr &e) {
-    pddl::Literal l;
-    const pddl::SExpr *atom = &e;
-    if (e.has_head("not") && e.items.size() == 2) {
-        l.negated = true;
-        atom = &e.items[1];
-    }
-    for (std::size_t i = 0; atom->is_list && i < atom->items.size(); ++i)
-        (i == 0 ? l.atom.predicate : l.atom.args.emplace_back()) = atom->items[i].to_string();
-    return l;
-}
-
 TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
     const std::array<Uses, 2> uses = predicate_uses(problem);
     for (int side : {ROBOT, HUMAN})

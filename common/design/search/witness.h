@@ -56,9 +56,6 @@ struct ModificationClass {
     std::string why_not; // the first edit that is not restricting, for the result
 };
 
-// An edit's literal as written: (not (p ?x a)) -> p(?x, a) negated. Names are not checked.
-pddl::Literal as_literal(const pddl::SExpr &e);
-
 // "(move c00 c10)" -> {"move", "c00", "c10"}
 std::vector<std::string> words_of(const std::string &step);
 
