@@ -129,7 +129,8 @@ void RequestRun::search(const design::DesignProblem &problem, const std::string 
     if (store && store->durable()) // each answer on disk before the search uses it
         evaluator.on_answer([&](const design::Configuration &c, const design::JobAnswer &a) {
             if (a.job.kind == design::JobKind::ROBOT_BOUND && a.robot_bound)
-                stored->keep_robot_bound(c, a.job.task, {*a.robot_bound, a.ie_floor});
+                stored->keep_robot_bound(c, a.job.task,
+                                         {*a.robot_bound, a.ie_floor, a.explanation_floor});
             else if (a.job.kind == design::JobKind::EXPLICABILITY)
                 stored->keep_task(c, a.job.task, a.explicability);
         });

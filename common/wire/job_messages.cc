@@ -93,6 +93,8 @@ std::optional<std::string> evaluation_problem(const evaluation_t &e, std::int8_t
             return "the robot bound is not a cost in [0, 2^31) or infinite";
         if (e.has_ie_floor && !design::valid_ie(e.ie_floor))
             return "the IE floor is not a number >= 0";
+        if (e.has_explanation_floor && !design::valid_explanation_floor(e.explanation_floor))
+            return "the explanation floor is not a count in [0, 1048576]";
         return std::nullopt;
     }
     if (e.status != evaluation_t::STATUS_SOLVED && e.status != evaluation_t::STATUS_INEXPLICABLE)
@@ -127,19 +129,21 @@ void put_explicability(const design::TaskExplicability &t, evaluation_t &e) {
     e.optimal_actions_length = static_cast<std::int32_t>(e.optimal_actions.size());
 }
 
-void put_robot_bound(std::optional<double> bound, std::optional<double> ie_floor, evaluation_t &e) {
-    e.status = bound ? evaluation_t::STATUS_SOLVED : evaluation_t::STATUS_LIMIT;
-    e.has_robot_bound = bound.has_value();
-    e.robot_bound = bound.value_or(design::INF);
-    e.has_ie_floor = bound && ie_floor;
-    e.ie_floor = e.has_ie_floor ? *ie_floor : 0;
+void put_robot_bound(const design::JobAnswer &a, evaluation_t &e) {
+    e.status = a.robot_bound ? evaluation_t::STATUS_SOLVED : evaluation_t::STATUS_LIMIT;
+    e.has_robot_bound = a.robot_bound.has_value();
+    e.robot_bound = a.robot_bound.value_or(design::INF);
+    e.has_ie_floor = a.robot_bound && a.ie_floor;
+    e.ie_floor = e.has_ie_floor ? *a.ie_floor : 0;
+    e.has_explanation_floor = e.has_ie_floor && a.explanation_floor;
+    e.explanation_floor = e.has_explanation_floor ? *a.explanation_floor : 0;
 }
 
 } // namespace
 
 void put_answer(const design::JobAnswer &answer, evaluation_t &e) {
     if (answer.job.kind == design::JobKind::ROBOT_BOUND)
-        put_robot_bound(answer.robot_bound, answer.ie_floor, e);
+        put_robot_bound(answer, e);
     else
         put_explicability(answer.explicability, e);
 }
@@ -151,6 +155,8 @@ design::JobAnswer job_answer(const design::Job &job, const evaluation_t &e) {
             answer.robot_bound = e.robot_bound;
         if (e.has_robot_bound && e.has_ie_floor)
             answer.ie_floor = e.ie_floor;
+        if (e.has_robot_bound && e.has_ie_floor && e.has_explanation_floor)
+            answer.explanation_floor = e.explanation_floor;
         return answer;
     }
     design::TaskExplicability &t = answer.explicability;

@@ -1,5 +1,7 @@
-// job_t's robot bound: it survives encoding and is checked like every number from the bus.
+// job_t's robot bound, and evaluation_t's floors: they survive encoding and are checked like
+// every number from the bus.
 
+#include "envdesign/evaluation_t.hpp"
 #include "envdesign/job_t.hpp"
 #include "spec/design_spec.h"
 #include "wire/job_messages.h"
@@ -58,6 +60,44 @@ TEST(JobMessages, ABadRobotBoundIsRejected) {
     explicability.has_robot_bound = true;
     explicability.robot_bound = 3;
     ASSERT_TRUE(job_problem(explicability, problem));
+}
+
+envdesign::evaluation_t evaluation_through_the_wire(const envdesign::evaluation_t &m) {
+    std::vector<std::uint8_t> bytes(m.getEncodedSize());
+    EXPECT_EQ(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())),
+              static_cast<int>(bytes.size()));
+    envdesign::evaluation_t out;
+    EXPECT_EQ(out.decode(bytes.data(), 0, static_cast<int>(bytes.size())),
+              static_cast<int>(bytes.size()));
+    return out;
+}
+
+// The explaining robot's explanation floor travels with the IE floor, and only with it.
+TEST(JobMessages, AnExplanationFloorTravelsWithItsIeFloor) {
+    design::Job job{0, 1, design::JobKind::ROBOT_BOUND, std::nullopt};
+    design::JobAnswer answer{job, 22.0, std::exp(8.0), {}, 2};
+    envdesign::evaluation_t e{};
+    put_answer(answer, e);
+    e.kind = envdesign::job_t::KIND_ROBOT_BOUND;
+    envdesign::evaluation_t back_message = evaluation_through_the_wire(e);
+    EXPECT_FALSE(evaluation_problem(back_message, envdesign::job_t::KIND_ROBOT_BOUND));
+    design::JobAnswer back = job_answer(job, back_message);
+    ASSERT_TRUE(back.explanation_floor);
+    EXPECT_EQ(*back.explanation_floor, 2);
+    EXPECT_EQ(*back.ie_floor, std::exp(8.0));
+
+    answer.ie_floor.reset(); // no IE floor: no explanation floor either
+    envdesign::evaluation_t bare{};
+    put_answer(answer, bare);
+    EXPECT_FALSE(bare.has_explanation_floor);
+
+    for (int bad : {-1, 1048577}) {
+        envdesign::evaluation_t forged = back_message;
+        forged.explanation_floor = bad;
+        auto why = evaluation_problem(forged, envdesign::job_t::KIND_ROBOT_BOUND);
+        ASSERT_TRUE(why) << bad;
+        EXPECT_NE(why->find("explanation floor"), std::string::npos) << *why;
+    }
 }
 
 } // namespace

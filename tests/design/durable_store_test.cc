@@ -58,6 +58,18 @@ TEST(EvaluationRecord, ReadsBackWhatWasWritten) {
     auto floored = decode_robot_bound(encode_robot_bound({12, std::exp(4.0)}));
     ASSERT_TRUE(floored && floored->ie_floor);
     EXPECT_EQ(*floored->ie_floor, std::exp(4.0));
+    EXPECT_FALSE(floored->explanation_floor);
+    // The explaining robot's explanation floor is appended after the IE floor: a record
+    // without it reads as before, and one with it keeps it.
+    std::string with = encode_robot_bound({12, std::exp(4.0), 3});
+    EXPECT_EQ(with.substr(0, encode_robot_bound({12, std::exp(4.0)}).size()),
+              encode_robot_bound({12, std::exp(4.0)}));
+    auto told = decode_robot_bound(with);
+    ASSERT_TRUE(told && told->explanation_floor);
+    EXPECT_EQ(*told->explanation_floor, 3);
+    std::string forged = with;
+    forged[forged.size() - 1] = '\x7f'; // a count far above any model's differences
+    EXPECT_FALSE(decode_robot_bound(forged));
 }
 
 // COST_OPTIMAL modes keep every action of the optimal plans (the witnesses); the records of

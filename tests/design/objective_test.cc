@@ -82,6 +82,29 @@ TEST(Objective, LowerBoundWithUnknownTasks) {
               objective_of(problem, 1.5, {known, other}).value + 1e-12);
 }
 
+// The explaining robot, task 1 unknown with robot bound 10, IE floor e^5 and explanation floor 3
+// (weights as above, H = 1.75, explanation_cost 2): explaining 3 differences beats acting at
+// e^5, so task 1 counts IE 1, robot cost 10 and 0.75 * 2 * 3 * 1.75 = 7.875 of explanation:
+//   5.25 (IE, as above) + 7.5 + 0.5 * 3 * (0.25 * 8 + 0.75 * 10) + 7.875 = 34.875.
+// Without the explanation floor, one difference: 0.75 * 2 * 1 * 1.75 = 2.625, so 29.625.
+TEST(Objective, LowerBoundCountsTheExplanationFloor) {
+    DesignProblem problem = two_tasks(0.25, 0.75, {2, 5, 0.5, 0.5, 3});
+    problem.weights.behaviour = RobotBehaviour::EXPLAINING;
+    problem.weights.explanation_cost = 2;
+    TaskExplicability known = solved_with(3, 8);
+    std::vector<std::optional<double>> robot = {std::nullopt, 10.0};
+    std::vector<std::optional<double>> ie = {std::nullopt, std::exp(5.0)};
+    EXPECT_DOUBLE_EQ(objective_lower_bound(problem, 1.5, {&known, nullptr}, robot, ie, {{}, 3}),
+                     34.875);
+    EXPECT_DOUBLE_EQ(objective_lower_bound(problem, 1.5, {&known, nullptr}, robot, ie), 29.625);
+    // With an IE floor of e, acting (2 * 1.75 * 0.75 * e = 7.14) is cheaper than telling 3
+    // (2.625 + 7.875 = 10.5), though not than telling one (5.25).
+    std::vector<std::optional<double>> low = {std::nullopt, std::exp(1.0)};
+    EXPECT_NEAR(objective_lower_bound(problem, 1.5, {&known, nullptr}, robot, low, {{}, 3}),
+                2 * 1.75 * (0.75 + 0.75 * std::exp(1.0)) + 7.5 + 14.25, 1e-9);
+    EXPECT_DOUBLE_EQ(objective_lower_bound(problem, 1.5, {&known, nullptr}, robot, low), 29.625);
+}
+
 TEST(Ranking, LowerObjectiveFirst) {
     EXPECT_TRUE(ranks_before({10, 5, {0, 1}}, {11, 0, {}}));
     EXPECT_FALSE(ranks_before({11, 0, {}}, {10, 5, {0, 1}}));

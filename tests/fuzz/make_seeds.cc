@@ -178,6 +178,10 @@ void wire_number_seeds(const fs::path &source, const fs::path &out) {
     e.has_ie_floor = true;
     e.ie_floor = -1;
     seed("ie-floor-negative", 0, bus::encode_message(e));
+    e.ie_floor = 20;
+    e.has_explanation_floor = true;
+    e.explanation_floor = -3;
+    seed("explanation-floor-negative", 0, bus::encode_message(e));
     envdesign::job_t job{};
     job.sender = "coordinator";
     job.planner = "planner";

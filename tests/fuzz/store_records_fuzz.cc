@@ -21,10 +21,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
             std::abort();
     }
     if (auto bound = decode_robot_bound(bytes)) {
-        if (!valid_plan_cost(bound->cost) || (bound->ie_floor && !valid_ie(*bound->ie_floor)))
+        if (!valid_plan_cost(bound->cost) || (bound->ie_floor && !valid_ie(*bound->ie_floor)) ||
+            (bound->explanation_floor && !valid_explanation_floor(*bound->explanation_floor)))
             std::abort();
         auto back = decode_robot_bound(encode_robot_bound(*bound));
-        if (!back || back->cost != bound->cost || back->ie_floor != bound->ie_floor)
+        if (!back || back->cost != bound->cost || back->ie_floor != bound->ie_floor ||
+            back->explanation_floor != bound->explanation_floor)
             std::abort();
     }
     return 0;

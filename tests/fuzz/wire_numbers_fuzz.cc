@@ -53,6 +53,8 @@ void evaluation(const evaluation_t &e) {
         if (kind == job_t::KIND_ROBOT_BOUND) {
             require(!answer.robot_bound || cost_or_none(*answer.robot_bound));
             require(!answer.ie_floor || (!std::isnan(*answer.ie_floor) && *answer.ie_floor >= 0));
+            require(!answer.explanation_floor ||
+                    (*answer.explanation_floor >= 0 && *answer.explanation_floor <= 1048576));
             continue;
         }
         const design::TaskExplicability &t = answer.explicability;

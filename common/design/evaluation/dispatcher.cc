@@ -19,6 +19,7 @@ Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int ta
         e.tasks.resize(tasks);
         e.robot_cost_bounds.resize(tasks);
         e.ie_floors.resize(tasks);
+        e.explanation_floors.resize(tasks);
         for (int t = 0; t < tasks; ++t) {
             if (e.tasks[t])
                 continue;
@@ -79,6 +80,7 @@ void Dispatcher::receive(JobAnswer a) {
         if (a.robot_bound) // else keep a given one
             state_[c].robot_cost_bounds[a.job.task] = a.robot_bound;
         state_[c].ie_floors[a.job.task] = a.ie_floor;
+        state_[c].explanation_floors[a.job.task] = a.explanation_floor;
     } else if (a.explicability.status == ExplicabilityStatus::LIMIT) {
         stop(c, EvaluationStatus::LIMIT);
     } else {

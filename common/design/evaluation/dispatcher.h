@@ -40,6 +40,9 @@ struct JobAnswer {
     std::optional<double> robot_bound; // ROBOT_BOUND: c_R* (INF: no plan), unset: no bound
     std::optional<double> ie_floor;    // ROBOT_BOUND: a lower bound on the task's IE, if any
     TaskExplicability explicability;   // EXPLICABILITY
+    // ROBOT_BOUND, a robot that may explain: a lower bound on the differences any explanation
+    // tells (explanation_floor.h), where the floor is above the least IE.
+    std::optional<int> explanation_floor = std::nullopt;
 };
 
 class Dispatcher {

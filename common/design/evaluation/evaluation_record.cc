@@ -172,6 +172,10 @@ std::string encode_robot_bound(const RobotBound &bound) {
         w.byte(1);
         w.real(*bound.ie_floor);
     }
+    if (bound.ie_floor && bound.explanation_floor) { // appended too, only after a floor
+        w.byte(2);
+        w.u64(static_cast<std::uint64_t>(*bound.explanation_floor));
+    }
     return w.take();
 }
 
@@ -184,6 +188,14 @@ std::optional<RobotBound> decode_robot_bound(const std::string &bytes) {
         if (r.byte() != 1)
             return std::nullopt;
         bound.ie_floor = r.real();
+    }
+    if (!r.at_end()) {
+        if (r.byte() != 2)
+            return std::nullopt;
+        std::uint64_t told = r.u64();
+        if (!valid_explanation_floor(static_cast<double>(told)))
+            return std::nullopt;
+        bound.explanation_floor = static_cast<int>(told);
     }
     if (!r.ok() || !r.at_end() || !valid_plan_cost(bound.cost) ||
         (bound.ie_floor && !valid_ie(*bound.ie_floor)))

@@ -28,10 +28,12 @@ std::string encode_evaluation(const TaskExplicability &evaluation);
 std::optional<TaskExplicability> decode_evaluation(const std::string &bytes); // nullopt: bad
 
 // A ROBOT_BOUND answer (dispatcher.h): c_R* under a configuration, and the task's IE floor
-// where one was argued (records written before floors have none).
+// where one was argued (records written before floors have none), with the explaining robot's
+// explanation floor beside it.
 struct RobotBound {
     double cost = 0;
     std::optional<double> ie_floor;
+    std::optional<int> explanation_floor = std::nullopt;
 };
 std::string encode_robot_bound(const RobotBound &bound);
 std::optional<RobotBound> decode_robot_bound(const std::string &bytes); // nullopt: bad

@@ -43,6 +43,10 @@ struct ConfigurationEvaluation {
     // Per task, a lower bound on its IE known before the task is evaluated (ie_floor in
     // explicability.h), where the evaluator could argue one; unset: the least IE.
     std::vector<std::optional<double>> ie_floors;
+    // Per task, for a robot that may explain: a lower bound on the size of any explanation,
+    // known before the task is evaluated (explanation_floor.h); unset: one where the IE floor
+    // is above the least IE, else none.
+    std::vector<std::optional<int>> explanation_floors = {};
 };
 
 // A configuration with nothing known yet.

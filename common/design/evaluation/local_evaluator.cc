@@ -1,8 +1,10 @@
 #include "design/evaluation/local_evaluator.h"
 
+#include "design/behaviour/behaviour.h"
 #include "design/behaviour/evaluate_task.h"
 #include "design/behaviour/explicability.h"
 #include "design/evaluation/dispatcher.h"
+#include "design/reconciliation/explanation_floor.h"
 
 #include "concurrency/blocking_queue.h"
 
@@ -55,17 +57,20 @@ std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &conf
     return std::nullopt;
 }
 
-std::optional<double> LocalEvaluator::ie_floor(const Configuration &configuration, int task,
-                                               std::optional<double> robot_bound,
-                                               const Deadline &deadline) {
+void LocalEvaluator::floors(const Configuration &configuration, int task, const Deadline &deadline,
+                            JobAnswer &answer) {
+    const std::optional<double> &robot_bound = answer.robot_bound;
     if (!ie_floors_ || !robot_bound || !std::isfinite(*robot_bound))
-        return std::nullopt;
+        return;
     ModelPair models = configured_models(problem_, configuration, task);
     PlanOutcome human = solve_model(models.human_domain, models.human_problem, cache_, deadline);
     if (human.status != PlanStatus::SOLVED)
-        return std::nullopt;
-    return design::ie_floor(*robot_bound, static_cast<double>(human.cost),
-                            problem_.weights.distance);
+        return;
+    const ObjectiveWeights &w = problem_.weights;
+    answer.ie_floor = ie_floor(*robot_bound, static_cast<double>(human.cost), w.distance);
+    // Above the least IE, the human's plan costs people less than pi_R (ie_floor's argument).
+    if (behaviour_of(w.behaviour).may_explain && *answer.ie_floor > least_ie(w.distance))
+        answer.explanation_floor = explanation_floor(models, human.plan, *robot_bound);
 }
 
 JobAnswer LocalEvaluator::answer(const Configuration &configuration, const Job &job,
@@ -74,7 +79,7 @@ JobAnswer LocalEvaluator::answer(const Configuration &configuration, const Job &
     if (job.kind == JobKind::ROBOT_BOUND) {
         answer.robot_bound =
             job.robot_bound ? job.robot_bound : robot_cost_bound(configuration, job.task, deadline);
-        answer.ie_floor = ie_floor(configuration, job.task, answer.robot_bound, deadline);
+        floors(configuration, job.task, deadline, answer);
     } else
         answer.explicability = evaluate_task(configuration, job.task, deadline);
     return answer;

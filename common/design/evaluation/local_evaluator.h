@@ -31,10 +31,11 @@ public:
     // The robot's optimal cost under `configuration` (INF: no plan; unset: out of time).
     std::optional<double> robot_cost_bound(const Configuration &configuration, int task,
                                            const Deadline &deadline);
-    // ie_floor of the task under `configuration` given its robot bound; unset where no floor
-    // is argued (see above) or out of time.
-    std::optional<double> ie_floor(const Configuration &configuration, int task,
-                                   std::optional<double> robot_bound, const Deadline &deadline);
+    // ie_floor of the task under `configuration` given its robot bound, into `answer`
+    // (and, for a robot that may explain, its explanation_floor); unset where no floor is
+    // argued (see above) or out of time.
+    void floors(const Configuration &configuration, int task, const Deadline &deadline,
+                JobAnswer &answer);
     PlanCache &planner() { return cache_; }
 
     // The answer to one job, as a worker (or a planner service) computes it.

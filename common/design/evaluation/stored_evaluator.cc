@@ -49,6 +49,7 @@ ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluatio
     e.tasks.resize(tasks);
     e.robot_cost_bounds.resize(tasks);
     e.ie_floors.resize(tasks);
+    e.explanation_floors.resize(tasks);
     e.status = EvaluationStatus::COMPLETE;
     for (int t = 0; t < tasks; ++t) {
         if (!e.tasks[t])
@@ -60,6 +61,7 @@ ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluatio
             if (bound && (!e.robot_cost_bounds[t] || *e.robot_cost_bounds[t] <= bound->cost)) {
                 e.robot_cost_bounds[t] = bound->cost;
                 e.ie_floors[t] = bound->ie_floor;
+                e.explanation_floors[t] = bound->explanation_floor;
             }
         }
         if (!e.tasks[t])
@@ -84,7 +86,9 @@ void StoredEvaluator::keep(const ConfigurationEvaluation &evaluation,
             store_.keep_robot_bound(
                 evaluation.configuration, key(t),
                 {*evaluation.robot_cost_bounds[t],
-                 given(evaluation.ie_floors, t) ? evaluation.ie_floors[t] : std::nullopt});
+                 given(evaluation.ie_floors, t) ? evaluation.ie_floors[t] : std::nullopt,
+                 given(evaluation.explanation_floors, t) ? evaluation.explanation_floors[t]
+                                                         : std::nullopt});
     }
 }
 

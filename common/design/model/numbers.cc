@@ -17,6 +17,10 @@ bool valid_plan_cost(double cost) { return cost == INF || !number_problem(cost, 
 
 bool valid_ie(double ie) { return !std::isnan(ie) && ie >= 0; }
 
+bool valid_explanation_floor(double told) {
+    return !number_problem(told, EXPLANATION_FLOOR) && told == std::floor(told);
+}
+
 std::optional<std::string> evaluation_problem(const TaskExplicability &e) {
     if (e.status != ExplicabilityStatus::SOLVED && e.status != ExplicabilityStatus::INEXPLICABLE)
         return "the evaluation is neither solved nor inexplicable";

@@ -29,6 +29,8 @@ inline constexpr NumberRange TASK_WEIGHT{0, 1e12};       // a task's probability
 inline constexpr NumberRange TIME_LIMIT_S{0, 1e7};       // about 115 days; 0: no limit
 inline constexpr NumberRange PLAN_COST{0, 2147483647.0}; // c_R, c_H: 32-bit ground costs
 inline constexpr NumberRange DESIGN_SIZE{0, 1e5};        // max_design_size; 0: no limit
+// An explanation floor (explanation_floor.h): a count of model differences.
+inline constexpr NumberRange EXPLANATION_FLOOR{0, 1048576};
 
 // nullopt when `value` is finite and in `range`; else "must be a number in [LOW, HIGH]
 // (got VALUE)", to follow the name of what was read.
@@ -38,6 +40,8 @@ std::optional<std::string> number_problem(double value, NumberRange range);
 bool valid_plan_cost(double cost);
 // An IE: a number >= 0, INF included (no plan, or a gap exp overflows).
 bool valid_ie(double ie);
+// An explanation floor: an integer in EXPLANATION_FLOOR.
+bool valid_explanation_floor(double told);
 
 // The values of an evaluation received (wire) or read back (store): SOLVED or INEXPLICABLE,
 // costs valid plan costs, IE not NaN and at least 0, INEXPLICABLE with an infinite IE, a

@@ -18,16 +18,18 @@ double contribution(const ObjectiveWeights &w, double ie, double extra, double c
 }
 
 // The least a task not evaluated yet can cost, from its IE floor: acting at IE >= floor, or
-// (a robot that may explain, floor above the least IE) explaining at least one difference.
-BehaviourChoice floor_choice(const ObjectiveWeights &w, double floor, double robot_bound) {
+// (a robot that may explain, floor above the least IE) explaining at least `told` differences,
+// and at least one.
+BehaviourChoice floor_choice(const ObjectiveWeights &w, double floor, double robot_bound,
+                             int told) {
     double least = least_ie(w.distance);
     BehaviourChoice act{true, false, std::max(floor, least), robot_bound, 0};
     if (!behaviour_of(w.behaviour).may_explain || act.ie <= least)
         return act;
-    BehaviourChoice explain{true, true, least, robot_bound, w.explanation_cost};
+    double explained = w.explanation_cost * std::max(1, told);
+    BehaviourChoice explain{true, true, least, robot_bound, explained};
     double act_value = contribution(w, act.ie, 0, robot_bound);
-    double explain_value =
-        contribution(w, least, discounted_horizon(w) * w.explanation_cost, robot_bound);
+    double explain_value = contribution(w, least, discounted_horizon(w) * explained, robot_bound);
     return explain_value < act_value ? explain : act;
 }
 
@@ -77,7 +79,8 @@ Objective objective_of(const ObjectiveWeights &w, double design_cost,
 double objective_lower_bound(const DesignProblem &problem, double design_cost,
                              const std::vector<const TaskExplicability *> &known,
                              const std::vector<std::optional<double>> &robot_cost_bounds,
-                             const std::vector<std::optional<double>> &ie_floors) {
+                             const std::vector<std::optional<double>> &ie_floors,
+                             const std::vector<std::optional<int>> &explanation_floors) {
     const ObjectiveWeights &w = problem.weights;
     double expected_ie = 0, expected_cost = 0, expected_explanation = 0;
     for (std::size_t i = 0; i < problem.tasks.size(); ++i) {
@@ -94,10 +97,15 @@ double objective_lower_bound(const DesignProblem &problem, double design_cost,
         if (!settled && std::isinf(bound))
             return INF;
         // An unknown task: robot cost at least c_R* (both options), and the cheaper of its
-        // IE floor (the least IE without one) and, for a robot that may explain, telling one
-        // difference (explicability.h: above the least IE, pi_R needs one).
-        if (!settled)
-            c = floor_choice(w, i < ie_floors.size() && ie_floors[i] ? *ie_floors[i] : 0, bound);
+        // IE floor (the least IE without one) and, for a robot that may explain, telling its
+        // explanation floor, or one difference (explicability.h: above the least IE, pi_R
+        // needs one).
+        if (!settled) {
+            double floor = i < ie_floors.size() && ie_floors[i] ? *ie_floors[i] : 0;
+            int told =
+                i < explanation_floors.size() && explanation_floors[i] ? *explanation_floors[i] : 1;
+            c = floor_choice(w, floor, bound, told);
+        }
         expected_ie += p * c.ie;
         expected_cost += p * c.robot_cost;
         expected_explanation += p * c.explanation;

@@ -68,7 +68,8 @@ Objective objective_of(const ObjectiveWeights &weights, double design_cost,
 double objective_lower_bound(const DesignProblem &problem, double design_cost,
                              const std::vector<const TaskExplicability *> &known,
                              const std::vector<std::optional<double>> &robot_cost_bounds = {},
-                             const std::vector<std::optional<double>> &ie_floors = {});
+                             const std::vector<std::optional<double>> &ie_floors = {},
+                             const std::vector<std::optional<int>> &explanation_floors = {});
 
 // a == b within a relative 1e-9 (infinities equal each other only).
 bool nearly_equal(double a, double b);

@@ -16,6 +16,15 @@ long long binomial(long long n, long long k) {
                                                         : static_cast<long long>(value + 0.5L);
 }
 
+double own_lower_bound(const DesignProblem &problem, double cost,
+                       const ConfigurationEvaluation &partial) {
+    std::vector<const TaskExplicability *> known;
+    for (const auto &t : partial.tasks)
+        known.push_back(t ? &*t : nullptr);
+    return objective_lower_bound(problem, cost, known, partial.robot_cost_bounds, partial.ie_floors,
+                                 partial.explanation_floors);
+}
+
 void close_counters(DesignCounters &counters, const Evaluator &evaluator,
                     std::chrono::steady_clock::time_point start) {
     counters.evaluator = evaluator.counters();

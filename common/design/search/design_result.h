@@ -101,4 +101,9 @@ double ranking_limit(const DesignResult &result, const Ranking &ranking);
 // C(n, k), saturating at the largest long long.
 long long binomial(long long n, long long k);
 
+// A lower bound on the objective of `partial`'s configuration alone (design cost `cost`),
+// from what its evaluation knows so far: tasks, robot bounds and floors.
+double own_lower_bound(const DesignProblem &problem, double cost,
+                       const ConfigurationEvaluation &partial);
+
 } // namespace envdesign::design

@@ -18,14 +18,14 @@ DesignResult search_design(const DesignProblem &problem, Evaluator &evaluator,
     std::optional<DesignResult> proven;
     if (witness && explaining && witness::explaining_applies(problem, TouchIndex(problem), options))
         proven = search_explaining_by_hitting_sets(problem, evaluator, options, progress);
-    DesignResult result = proven ? std::move(*proven)
-                          : witness && !explaining
-                              ? search_witness(problem, evaluator, options, progress)
-                              : search_exhaustive(problem, evaluator, options, progress);
+    DesignResult result = proven       ? std::move(*proven)
+                          : !witness   ? search_exhaustive(problem, evaluator, options, progress)
+                          : explaining ? search_every_design(problem, evaluator, options, progress)
+                                       : search_witness(problem, evaluator, options, progress);
     if (witness && explaining && !proven)
         result.notes.push_back("robot_behaviour EXPLAINING: the witness search does not apply "
-                               "(explanations depend on every model difference); searched "
-                               "exhaustively");
+                               "(explanations depend on every model difference); every design "
+                               "was weighed, least bound first (docs/design-search.md)");
     else if (proven)
         result.notes.push_back("robot_behaviour EXPLAINING: no design is grown by its witnesses "
                                "(explanations depend on every model difference); the hitting-set "

@@ -117,7 +117,7 @@ private:
 
     // Queues `c` for evaluation unless the bound excludes it; false if it was excluded.
     bool consider(Configuration c, std::vector<Configuration> &batch) {
-        if (cannot_win(c, {})) {
+        if (cannot_win(unevaluated(c))) {
             skip(1);
             return false;
         }
@@ -137,14 +137,11 @@ private:
                                ranking_limit(result_, ranking_));
     }
 
-    bool cannot_win(const Configuration &configuration,
-                    const std::vector<const TaskExplicability *> &known,
-                    const std::vector<std::optional<double>> &robot_cost_bounds = {},
-                    const std::vector<std::optional<double>> &ie_floors = {}) const {
+    bool cannot_win(const ConfigurationEvaluation &partial) const {
         if (!result_.best)
             return false;
-        double bound = objective_lower_bound(problem_, design_cost(problem_, configuration), known,
-                                             robot_cost_bounds, ie_floors);
+        double bound =
+            own_lower_bound(problem_, design_cost(problem_, partial.configuration), partial);
         return clearly_greater(bound, ranking_limit(result_, ranking_));
     }
 
@@ -156,11 +153,7 @@ private:
             requests.push_back(unevaluated(std::move(c)));
         EvaluationCallbacks callbacks;
         callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
-            std::vector<const TaskExplicability *> known;
-            for (const auto &t : partial.tasks)
-                known.push_back(t ? &*t : nullptr);
-            return cannot_win(partial.configuration, known, partial.robot_cost_bounds,
-                              partial.ie_floors);
+            return cannot_win(partial);
         };
         callbacks.done = [&](ConfigurationEvaluation e) { collect(std::move(e)); };
         evaluator_.evaluate(requests, options_.deadline, callbacks);

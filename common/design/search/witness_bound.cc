@@ -20,14 +20,15 @@ bool contains(const std::vector<int> &sorted, int value) {
     return std::binary_search(sorted.begin(), sorted.end(), value);
 }
 
-SupersetBound::SupersetBound(const DesignProblem &problem, const TouchIndex &index)
+SupersetBound::SupersetBound(const DesignProblem &problem, const TouchIndex &index,
+                             bool weigh_every_modification)
     : problem_(problem), index_(index), tasks_(static_cast<int>(problem.tasks.size())),
       pool_(tasks_), horizon_(discounted_horizon(problem.weights)),
       floors_hold_(behaviour_of(problem.weights.behaviour).takes_most_explicable_plan) {
     for (int m = 0; m < index.size(); ++m) {
         const ModificationClass &c = index.of(m);
         bool negative = problem.weights.beta * problem.modifications[m].cost < 0;
-        if (!c.restricting || negative)
+        if (!c.restricting || negative || weigh_every_modification)
             always_.push_back(m);
         if (!c.robot_restricting)
             robot_relaxing_.push_back(m);

@@ -32,6 +32,12 @@ struct Node {
     std::vector<double> explicable_floor;
     double cost = 0;  // C(xi)
     double bound = 0; // on the objective of this configuration and of every superset
+    // Every design weighed (the explaining robot): the node came back after its floors were
+    // known (its children are queued already), `bound` is on its own objective alone, and
+    // the floors travel with its evaluation.
+    bool deferred = false;
+    std::vector<std::optional<double>> ie_floors;
+    std::vector<std::optional<int>> explanation_floors;
 };
 
 // A plan known to be valid in the human's model of some configuration xi: valid in every
@@ -61,7 +67,10 @@ void raise_floor(Node &node, int t, const TaskExplicability &e);
 class SupersetBound {
 public:
     // Both must outlive the bound.
-    SupersetBound(const DesignProblem &problem, const TouchIndex &index);
+    // `weigh_every_modification`: every modification is added everywhere (always()), as if none
+    // were restricting (no witness lemma: the explaining robot).
+    SupersetBound(const DesignProblem &problem, const TouchIndex &index,
+                  bool weigh_every_modification = false);
 
     // A lower bound on the objective of `node`'s configuration and of every superset.
     double operator()(const Node &node) const;

@@ -60,19 +60,25 @@ private:
     std::vector<Node> heap_;
 };
 
+// What the search visits: designs grown by their witnesses (the default); for the explaining
+// robot, the root, the probes and the hitting-set phase alone, or every design best first.
+enum class Visit { WITNESSES, PHASE_ONLY, EVERY_DESIGN };
+
 class WitnessSearch {
 public:
     WitnessSearch(const DesignProblem &problem, Evaluator &evaluator,
                   const DesignSearchOptions &options,
-                  const std::function<void(const SearchProgress &)> &progress)
+                  const std::function<void(const SearchProgress &)> &progress, Visit visit)
         : problem_(problem), evaluator_(evaluator), options_(options), progress_(progress),
-          index_(problem), bound_(problem, index_), robot_bound_memory_(index_.robot_restricting()),
+          index_(problem), bound_(problem, index_, visit == Visit::EVERY_DESIGN),
+          robot_bound_memory_(index_.robot_restricting()),
           ranking_(options.ranking, options.ranking_all ? Padding::LISTED : Padding::LEFT_OUT),
           learner_(problem, evaluator, options, index_, bound_, result_, ranking_,
                    [this] { report(); }),
-          tasks_(static_cast<int>(problem.tasks.size())),
-          phase_only_(!behaviour_of(problem.weights.behaviour).value_follows_witnesses) {
-        note_added_everywhere();
+          tasks_(static_cast<int>(problem.tasks.size())), phase_only_(visit == Visit::PHASE_ONLY),
+          every_design_(visit == Visit::EVERY_DESIGN) {
+        if (!every_design_)
+            note_added_everywhere();
         if (behaviour_of(problem.weights.behaviour).runs_an_optimal_plan)
             result_.notes.push_back(
                 "robot_behaviour " + std::string(behaviour_of(problem.weights.behaviour).name) +
@@ -122,7 +128,12 @@ public:
         Node root{{},
                   std::vector<Record>(tasks_),
                   std::vector<std::optional<double>>(tasks_),
-                  std::vector<double>(tasks_, 0.0)};
+                  std::vector<double>(tasks_, 0.0),
+                  0,
+                  0,
+                  false,
+                  {},
+                  {}};
         root.bound = bound_(root);
         visited_.insert(root.configuration);
         ++generated_;
@@ -135,7 +146,7 @@ public:
                 break;
             }
             evaluate(next_batch());
-            if (!probed && result_.baseline) {
+            if (!probed && result_.baseline && !every_design_) {
                 probed = true;
                 if (phase_only_)
                     open_.clear(); // no growth by witnesses (EXPLAINING)
@@ -219,6 +230,8 @@ private:
             robot_bound_memory_.inherit(batch[i].configuration, batch[i].robot_bounds);
             ConfigurationEvaluation r = unevaluated(batch[i].configuration);
             r.robot_cost_bounds = batch[i].robot_bounds;
+            r.ie_floors = batch[i].ie_floors;
+            r.explanation_floors = batch[i].explanation_floors;
             r.tasks.resize(batch[i].tasks.size());
             for (std::size_t t = 0; t < r.tasks.size(); ++t)
                 if (const Record &record = batch[i].tasks[t])
@@ -229,8 +242,14 @@ private:
         EvaluationCallbacks callbacks;
         callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
             const Node &node = batch[position.at(partial.configuration)];
-            if (blind(node)) // grown already: only its own objective matters
-                return !can_win(own_bound(node.cost, partial), node.configuration.size());
+            if (blind(node)) { // grown already: only its own objective matters
+                double own = own_bound(node.cost, partial);
+                if (!can_win(own, node.configuration.size()))
+                    return true;
+                if (should_defer(node, partial, own))
+                    deferred_.insert(node.configuration);
+                return deferred_.count(node.configuration) > 0;
+            }
             Node known = node; // what the answers so far add; their witnesses are not read yet
             for (int t = 0; t < tasks_; ++t) {
                 if (!known.robot_bounds[t] &&
@@ -267,6 +286,16 @@ private:
         }
         ++done_;
         robot_bound_memory_.remember(node.configuration, e.robot_cost_bounds);
+        if (e.status == EvaluationStatus::CUT_OFF && deferred_.erase(node.configuration) > 0) {
+            node.deferred = true;
+            node.bound = own_bound(node.cost, e);
+            node.robot_bounds = e.robot_cost_bounds;
+            node.ie_floors = e.ie_floors;
+            node.explanation_floors = e.explanation_floors;
+            --done_;
+            open_.push(std::move(node));
+            return;
+        }
         if (e.status == EvaluationStatus::CUT_OFF) {
             ++counters.configurations_abandoned;
             if (grow_without_witnesses_.erase(node.configuration) > 0) {
@@ -331,7 +360,10 @@ private:
                        node.robot_bounds,
                        node.explicable_floor,
                        node.cost + problem_.modifications[m].cost,
-                       0};
+                       0,
+                       false,
+                       {},
+                       {}};
             for (int t = 0; t < tasks_; ++t) {
                 const Record &r = node.tasks[t];
                 if (!r || !k.restricting || !r->touch.known || contains(r->touch.all, m))
@@ -353,13 +385,30 @@ private:
         }
     }
 
+    // Every design weighed: before any task is evaluated, a design whose own bound, with the
+    // bounds and floors answered since it left the queue, is above the least in the queue goes
+    // back under that bound. Designs are then evaluated in the order of their own bounds (a good
+    // design early, the others abandoned on its objective), and a design's remaining floors are
+    // asked only when it is the least again. Each return follows a new answer, so it ends.
+    bool should_defer(const Node &node, const ConfigurationEvaluation &partial, double own) const {
+        if (!every_design_ || open_.empty() || !clearly_greater(own, open_.top().bound) ||
+            bounds_known(partial.robot_cost_bounds, partial.ie_floors) <=
+                bounds_known(node.robot_bounds, node.ie_floors))
+            return false;
+        return std::none_of(partial.tasks.begin(), partial.tasks.end(),
+                            [](const auto &t) { return t.has_value(); });
+    }
+
+    static int bounds_known(const std::vector<std::optional<double>> &robot_bounds,
+                            const std::vector<std::optional<double>> &ie_floors) {
+        auto set = [](const auto &v) { return v.has_value(); };
+        return static_cast<int>(std::count_if(robot_bounds.begin(), robot_bounds.end(), set) +
+                                std::count_if(ie_floors.begin(), ie_floors.end(), set));
+    }
+
     // A lower bound on the objective of the configuration alone, from what is known of it.
     double own_bound(double cost, const ConfigurationEvaluation &partial) const {
-        std::vector<const TaskExplicability *> tasks;
-        for (const auto &t : partial.tasks)
-            tasks.push_back(t ? &*t : nullptr);
-        return objective_lower_bound(problem_, cost, tasks, partial.robot_cost_bounds,
-                                     partial.ie_floors);
+        return own_lower_bound(problem_, cost, partial);
     }
 
     // When every modification outside `node` is added everywhere anyway, its witnesses do not
@@ -435,7 +484,8 @@ private:
     Ranking ranking_; // the N best (options.ranking)
     witness::DesignLearner learner_;
     int tasks_;
-    bool phase_only_; // EXPLAINING: the root, the probes and the hitting-set phase alone
+    bool phase_only_;   // EXPLAINING: the root, the probes and the hitting-set phase alone
+    bool every_design_; // EXPLAINING: every design weighed, best first, no phase
     bool proven_ = false;
     int max_size_ = 0;
     OpenList open_;
@@ -449,6 +499,7 @@ private:
     };
     std::unordered_set<Configuration, ConfigurationHash> visited_;
     std::set<Configuration> grow_without_witnesses_; // abandoned on their own bound
+    std::set<Configuration> deferred_;               // back to the queue (should_defer)
     long long generated_ = 0;
     long long done_ = 0;
     bool limit_seen_ = false;
@@ -460,14 +511,23 @@ private:
 DesignResult search_witness(const DesignProblem &problem, Evaluator &evaluator,
                             const DesignSearchOptions &options,
                             const std::function<void(const SearchProgress &)> &progress) {
-    return WitnessSearch(problem, evaluator, options, progress).run();
+    Visit visit = behaviour_of(problem.weights.behaviour).value_follows_witnesses
+                      ? Visit::WITNESSES
+                      : Visit::PHASE_ONLY;
+    return WitnessSearch(problem, evaluator, options, progress, visit).run();
+}
+
+DesignResult search_every_design(const DesignProblem &problem, Evaluator &evaluator,
+                                 const DesignSearchOptions &options,
+                                 const std::function<void(const SearchProgress &)> &progress) {
+    return WitnessSearch(problem, evaluator, options, progress, Visit::EVERY_DESIGN).run();
 }
 
 std::optional<DesignResult>
 search_explaining_by_hitting_sets(const DesignProblem &problem, Evaluator &evaluator,
                                   const DesignSearchOptions &options,
                                   const std::function<void(const SearchProgress &)> &progress) {
-    WitnessSearch search(problem, evaluator, options, progress);
+    WitnessSearch search(problem, evaluator, options, progress, Visit::PHASE_ONLY);
     DesignResult result = search.run();
     if (search.proven() || options.deadline.expired())
         return result;
