@@ -337,4 +337,35 @@ double SupersetBound::with_open_shares(const Node &node, const OpenTasks &open,
     return total;
 }
 
+std::vector<std::string> SupersetBound::weighed_everywhere_notes() const {
+    std::vector<std::string> notes;
+    std::vector<std::string> adding;
+    for (int m : always_) {
+        const ModificationClass &c = index_.of(m);
+        const Modification &mod = problem_.modifications[m];
+        if (!c.restricting && c.adding && problem_.weights.beta * mod.cost >= 0) {
+            adding.push_back("'" + mod.name + "'");
+            continue;
+        }
+        notes.push_back(
+            "modification '" + mod.name + "' " +
+            (c.restricting ? "has a negative cost" : "is not restricting (" + c.why_not + ")") +
+            ": the search weighs it with every design, not only where a witness plan uses "
+            "what it changes");
+    }
+    if (adding.empty())
+        return notes;
+    std::string names;
+    for (std::size_t i = 0; i < adding.size() && i < 5; ++i)
+        names += (i ? ", " : "") + adding[i];
+    if (adding.size() > 5)
+        names += " and " + std::to_string(adding.size() - 5) + " more";
+    notes.push_back(std::to_string(adding.size()) +
+                    (adding.size() == 1 ? " modification adds" : " modifications add") +
+                    " plans (" + names +
+                    "): the search weighs each with every design, and bounds it by "
+                    "the floors it can lower (docs/design-search.md)");
+    return notes;
+}
+
 } // namespace envdesign::design::witness

@@ -32,10 +32,9 @@ struct Node {
     std::vector<double> explicable_floor;
     double cost = 0;  // C(xi)
     double bound = 0; // on the objective of this configuration and of every superset
-    // Every design weighed (the explaining robot): the node came back after its floors were
-    // known (its children are queued already), `bound` is on its own objective alone, and
-    // the floors travel with its evaluation.
-    bool deferred = false;
+    // Every design weighed (the explaining robot): a node back in the queue after some of its
+    // floors were answered (its children are queued already) has `bound` on its own objective
+    // alone, and these floors go with its next evaluation.
     std::vector<std::optional<double>> ie_floors;
     std::vector<std::optional<int>> explanation_floors;
 };
@@ -87,6 +86,10 @@ public:
     // Modifications added to every configuration: not restricting, or of negative cost.
     const std::vector<int> &always() const { return always_; }
     bool always_outside(const Node &node) const;
+    // Why some modifications are weighed with every design: one note per modification that is
+    // not restricting or costs less than nothing, and one for all that add plans (a floor's
+    // lanes are hundreds).
+    std::vector<std::string> weighed_everywhere_notes() const;
 
 private:
     // What open_bound knows of each task.

@@ -1,6 +1,7 @@
 #include "design/search/witness_search.h"
 
 #include "design/behaviour/behaviour.h"
+#include "design/search/open_list.h"
 #include "design/search/robot_bounds.h"
 #include "design/search/witness_bound.h"
 #include "design/search/witness_learning.h"
@@ -19,46 +20,12 @@ namespace {
 using witness::contains;
 using witness::Node;
 using witness::offer_cone_of;
+using witness::OpenList;
 using witness::PooledPlan;
 using witness::raise_floor;
 using witness::Record;
 using witness::TaskRecord;
 using witness::values_only;
-
-// Least bound first; then the order in which SPEC.md breaks ties.
-struct LaterInQueue {
-    bool operator()(const Node &a, const Node &b) const {
-        if (a.bound != b.bound)
-            return a.bound > b.bound;
-        if (a.configuration.size() != b.configuration.size())
-            return a.configuration.size() > b.configuration.size();
-        if (a.cost != b.cost)
-            return a.cost > b.cost;
-        return a.configuration > b.configuration;
-    }
-};
-
-// The queue of configurations to evaluate, least bound first; pop() moves the node out.
-class OpenList {
-public:
-    bool empty() const { return heap_.empty(); }
-    std::size_t size() const { return heap_.size(); }
-    const Node &top() const { return heap_.front(); }
-    void push(Node node) {
-        heap_.push_back(std::move(node));
-        std::push_heap(heap_.begin(), heap_.end(), LaterInQueue{});
-    }
-    Node pop() {
-        std::pop_heap(heap_.begin(), heap_.end(), LaterInQueue{});
-        Node node = std::move(heap_.back());
-        heap_.pop_back();
-        return node;
-    }
-    void clear() { heap_.clear(); }
-
-private:
-    std::vector<Node> heap_;
-};
 
 // What the search visits: designs grown by their witnesses (the default); for the explaining
 // robot, the root, the probes and the hitting-set phase alone, or every design best first.
@@ -78,7 +45,8 @@ public:
           tasks_(static_cast<int>(problem.tasks.size())), phase_only_(visit == Visit::PHASE_ONLY),
           every_design_(visit == Visit::EVERY_DESIGN) {
         if (!every_design_)
-            note_added_everywhere();
+            for (std::string &note : bound_.weighed_everywhere_notes())
+                result_.notes.push_back(std::move(note));
         if (behaviour_of(problem.weights.behaviour).runs_an_optimal_plan)
             result_.notes.push_back(
                 "robot_behaviour " + std::string(behaviour_of(problem.weights.behaviour).name) +
@@ -91,38 +59,6 @@ public:
         max_size_ = options.max_design_size > 0 ? options.max_design_size : index_.size();
     }
 
-    // Why the search weighs some modifications with every design: one note per modification
-    // that is not restricting or costs less than nothing, and one for all that add plans (a
-    // floor's lanes are hundreds).
-    void note_added_everywhere() {
-        std::vector<std::string> adding;
-        for (int m : bound_.always()) {
-            const ModificationClass &c = index_.of(m);
-            const Modification &mod = problem_.modifications[m];
-            if (!c.restricting && c.adding && problem_.weights.beta * mod.cost >= 0) {
-                adding.push_back("'" + mod.name + "'");
-                continue;
-            }
-            result_.notes.push_back(
-                "modification '" + mod.name + "' " +
-                (c.restricting ? "has a negative cost" : "is not restricting (" + c.why_not + ")") +
-                ": the search weighs it with every design, not only where a witness plan uses "
-                "what it changes");
-        }
-        if (adding.empty())
-            return;
-        std::string names;
-        for (std::size_t i = 0; i < adding.size() && i < 5; ++i)
-            names += (i ? ", " : "") + adding[i];
-        if (adding.size() > 5)
-            names += " and " + std::to_string(adding.size() - 5) + " more";
-        result_.notes.push_back(std::to_string(adding.size()) +
-                                (adding.size() == 1 ? " modification adds" : " modifications add") +
-                                " plans (" + names +
-                                "): the search weighs each with every design, and bounds it by "
-                                "the floors it can lower (docs/design-search.md)");
-    }
-
     DesignResult run() {
         auto start = std::chrono::steady_clock::now();
         Node root{{},
@@ -131,7 +67,6 @@ public:
                   std::vector<double>(tasks_, 0.0),
                   0,
                   0,
-                  false,
                   {},
                   {}};
         root.bound = bound_(root);
@@ -228,53 +163,61 @@ private:
                 continue;
             }
             robot_bound_memory_.inherit(batch[i].configuration, batch[i].robot_bounds);
-            ConfigurationEvaluation r = unevaluated(batch[i].configuration);
-            r.robot_cost_bounds = batch[i].robot_bounds;
-            r.ie_floors = batch[i].ie_floors;
-            r.explanation_floors = batch[i].explanation_floors;
-            r.tasks.resize(batch[i].tasks.size());
-            for (std::size_t t = 0; t < r.tasks.size(); ++t)
-                if (const Record &record = batch[i].tasks[t])
-                    r.tasks[t] = values_only(record->evaluation);
-            position[r.configuration] = i;
-            requests.push_back(std::move(r));
+            position[batch[i].configuration] = i;
+            requests.push_back(request_of(batch[i]));
         }
         EvaluationCallbacks callbacks;
         callbacks.abandon = [&](const ConfigurationEvaluation &partial) {
-            const Node &node = batch[position.at(partial.configuration)];
-            if (blind(node)) { // grown already: only its own objective matters
-                double own = own_bound(node.cost, partial);
-                if (!can_win(own, node.configuration.size()))
-                    return true;
-                if (should_defer(node, partial, own))
-                    deferred_.insert(node.configuration);
-                return deferred_.count(node.configuration) > 0;
-            }
-            Node known = node; // what the answers so far add; their witnesses are not read yet
-            for (int t = 0; t < tasks_; ++t) {
-                if (!known.robot_bounds[t] &&
-                    t < static_cast<int>(partial.robot_cost_bounds.size()))
-                    known.robot_bounds[t] = partial.robot_cost_bounds[t];
-                if (t < static_cast<int>(partial.tasks.size()) && partial.tasks[t])
-                    raise_floor(known, t, *partial.tasks[t]);
-            }
-            if (!can_win(bound_(known), node.configuration.size()))
-                return true;
-            // With modifications outside that are added everywhere, the bound of the subtree
-            // is weak and its witnesses narrow little: when the configuration itself cannot
-            // win, stop evaluating it and grow it by every modification instead.
-            if (bound_.always_outside(node) &&
-                !can_win(own_bound(node.cost, partial), node.configuration.size())) {
-                grow_without_witnesses_.insert(node.configuration);
-                return true;
-            }
-            return false;
+            return abandon(batch[position.at(partial.configuration)], partial);
         };
         callbacks.done = [&](ConfigurationEvaluation e) {
             Node &node = batch[position.at(e.configuration)];
             finish(node, std::move(e));
         };
         evaluator_.evaluate(requests, options_.deadline, callbacks);
+    }
+
+    // What the evaluator is told of `node`: what is known of it already.
+    ConfigurationEvaluation request_of(const Node &node) const {
+        ConfigurationEvaluation r = unevaluated(node.configuration);
+        r.robot_cost_bounds = node.robot_bounds;
+        r.ie_floors = node.ie_floors;
+        r.explanation_floors = node.explanation_floors;
+        r.tasks.resize(node.tasks.size());
+        for (std::size_t t = 0; t < r.tasks.size(); ++t)
+            if (const Record &record = node.tasks[t])
+                r.tasks[t] = values_only(record->evaluation);
+        return r;
+    }
+
+    // Whether to stop evaluating `node`, given what its evaluation knows so far.
+    bool abandon(const Node &node, const ConfigurationEvaluation &partial) {
+        if (blind(node)) { // grown already: only its own objective matters
+            double own = own_bound(node.cost, partial);
+            if (!can_win(own, node.configuration.size()))
+                return true;
+            if (should_defer(node, partial, own))
+                deferred_.insert(node.configuration);
+            return deferred_.count(node.configuration) > 0;
+        }
+        Node known = node; // what the answers so far add; their witnesses are not read yet
+        for (int t = 0; t < tasks_; ++t) {
+            if (!known.robot_bounds[t] && t < static_cast<int>(partial.robot_cost_bounds.size()))
+                known.robot_bounds[t] = partial.robot_cost_bounds[t];
+            if (t < static_cast<int>(partial.tasks.size()) && partial.tasks[t])
+                raise_floor(known, t, *partial.tasks[t]);
+        }
+        if (!can_win(bound_(known), node.configuration.size()))
+            return true;
+        // With modifications outside that are added everywhere, the bound of the subtree
+        // is weak and its witnesses narrow little: when the configuration itself cannot
+        // win, stop evaluating it and grow it by every modification instead.
+        if (bound_.always_outside(node) &&
+            !can_win(own_bound(node.cost, partial), node.configuration.size())) {
+            grow_without_witnesses_.insert(node.configuration);
+            return true;
+        }
+        return false;
     }
 
     void finish(Node &node, ConfigurationEvaluation e) {
@@ -287,13 +230,8 @@ private:
         ++done_;
         robot_bound_memory_.remember(node.configuration, e.robot_cost_bounds);
         if (e.status == EvaluationStatus::CUT_OFF && deferred_.erase(node.configuration) > 0) {
-            node.deferred = true;
-            node.bound = own_bound(node.cost, e);
-            node.robot_bounds = e.robot_cost_bounds;
-            node.ie_floors = e.ie_floors;
-            node.explanation_floors = e.explanation_floors;
+            requeue(std::move(node), e);
             --done_;
-            open_.push(std::move(node));
             return;
         }
         if (e.status == EvaluationStatus::CUT_OFF) {
@@ -361,7 +299,6 @@ private:
                        node.explicable_floor,
                        node.cost + problem_.modifications[m].cost,
                        0,
-                       false,
                        {},
                        {}};
             for (int t = 0; t < tasks_; ++t) {
@@ -383,6 +320,15 @@ private:
             else
                 skip(1);
         }
+    }
+
+    // Back to the queue under its own bound (should_defer), with the bounds and floors known.
+    void requeue(Node node, const ConfigurationEvaluation &e) {
+        node.bound = own_bound(node.cost, e);
+        node.robot_bounds = e.robot_cost_bounds;
+        node.ie_floors = e.ie_floors;
+        node.explanation_floors = e.explanation_floors;
+        open_.push(std::move(node));
     }
 
     // Every design weighed: before any task is evaluated, a design whose own bound, with the
