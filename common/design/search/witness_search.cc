@@ -333,11 +333,13 @@ private:
 
     // Every design weighed: before any task is evaluated, a design whose own bound, with the
     // bounds and floors answered since it left the queue, is above the least in the queue goes
-    // back under that bound. Designs are then evaluated in the order of their own bounds (a good
-    // design early, the others abandoned on its objective), and a design's remaining floors are
-    // asked only when it is the least again. Each return follows a new answer, so it ends.
+    // back under that bound (not the empty design: the result's baseline). Designs are then
+    // evaluated in the order of their own bounds (a good design early, the others abandoned on its
+    // objective), and a design's remaining floors are asked only when it is the least again. Each
+    // return follows a new answer, so it ends.
     bool should_defer(const Node &node, const ConfigurationEvaluation &partial, double own) const {
-        if (!every_design_ || open_.empty() || !clearly_greater(own, open_.top().bound) ||
+        if (!every_design_ || node.configuration.empty() || open_.empty() ||
+            !clearly_greater(own, open_.top().bound) ||
             bounds_known(partial.robot_cost_bounds, partial.ie_floors) <=
                 bounds_known(node.robot_bounds, node.ie_floors))
             return false;
