@@ -136,7 +136,7 @@ TEST(Dispatcher, AnIeFloorAbandonsBeforeTheOtherBounds) {
     EXPECT_FALSE(d.next_job());
 }
 
-// With IE floors, a robot bound the search inherited (robot_bounds.h) still gets a job: it
+// With IE floors, a robot bound the search inherited (rising_bounds.h) still gets a job: it
 // carries the bound, the answer keeps it and adds the floor. An infinite bound gets none.
 TEST(Dispatcher, AGivenBoundTravelsWithItsFloorJob) {
     Recorder r;

@@ -7,6 +7,7 @@
 #include "design/evaluation/evaluation_record.h"
 #include "design/evaluation/local_evaluator.h"
 #include "design/search/design_search.h"
+#include "design/search/witness_search.h"
 #include "every_configuration.h"
 #include "example_paths.h"
 #include "explaining_generator.h"
@@ -312,6 +313,41 @@ TEST(ExplainingSearch, WitnessAndExhaustiveAgreeWithEveryConfiguration) {
     EXPECT_GE(explained, 200);
     EXPECT_GE(nonempty_designs, 20);
     EXPECT_GE(proofs, 100); // most of them: every kind here restricts or adds
+}
+
+// The explaining robot's fallback, every design weighed least bound first with designs sent back
+// under their own bounds (search_every_design), called directly on problems of every kind (the
+// phase would prove most), against every configuration evaluated in full; on
+// ENVDESIGN_AGREEMENT_SEEDS problems (40 in CI; the check is 300).
+TEST(ExplainingSearch, EveryDesignSearchAgreesWithEveryConfiguration) {
+    const char *env = std::getenv("ENVDESIGN_AGREEMENT_SEEDS");
+    int seeds = env ? std::atoi(env) : 40;
+    int explained = 0, nonempty_designs = 0, disagreements = 0, skipped = 0;
+    for (int s = 0; s < seeds; ++s) {
+        unsigned seed = 9000u + static_cast<unsigned>(s);
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        DesignProblem p = generated_problem(seed, s % 3 == 0   ? Mods::ANY
+                                                  : s % 3 == 1 ? Mods::TELL_PEOPLE
+                                                               : Mods::TAPES_AND_LANES);
+        RankedDesign expected = every_configuration(p, explained);
+        LocalEvaluator evaluator(p, 1);
+        DesignResult r = search_every_design(p, evaluator, DesignSearchOptions{}, {});
+        ASSERT_TRUE(r.best);
+        EXPECT_TRUE(r.optimal);
+        EXPECT_TRUE(r.baseline); // the empty design is always evaluated
+        bool same = r.best->ranked.configuration == expected.configuration &&
+                    nearly_equal(r.best->objective.value, expected.objective);
+        EXPECT_TRUE(same) << r.best->objective.value << " vs " << expected.objective;
+        disagreements += !same;
+        nonempty_designs += !expected.configuration.empty();
+        skipped += r.counters.configurations_skipped > 0;
+    }
+    std::cout << "[ agreement ] explaining, every design best first: " << seeds << " problems, "
+              << disagreements << " disagreements; non-empty best designs " << nonempty_designs
+              << ", searches that skipped designs on their bounds " << skipped
+              << ", task evaluations explained " << explained << std::endl;
+    EXPECT_GE(nonempty_designs, seeds / 10);
+    EXPECT_GE(skipped, seeds / 4); // the bounds and the order are exercised
 }
 
 // The search with the hitting-set phase against every configuration evaluated in full, on

@@ -5,6 +5,7 @@
 #include "design/behaviour/explicability.h"
 #include "design/evaluation/dispatcher.h"
 #include "design/reconciliation/explanation_floor.h"
+#include "design/search/witness.h"
 
 #include "concurrency/blocking_queue.h"
 
@@ -38,7 +39,8 @@ struct Channel {
 LocalEvaluator::LocalEvaluator(const DesignProblem &problem, int workers,
                                planning::PlannerOptions options)
     : problem_(problem), workers_(std::max(1, workers)), cache_(std::move(options)),
-      ie_floors_(ie_floors_hold(problem)), robot_bounds_(asks_robot_bounds(problem)) {}
+      ie_floors_(ie_floors_hold(problem)), robot_bounds_(asks_robot_bounds(problem)),
+      human_optima_(TouchIndex(problem).human_restricting()) {}
 
 TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configuration, int task,
                                                 const Deadline &deadline) {
@@ -62,11 +64,26 @@ void LocalEvaluator::floors(const Configuration &configuration, int task, const 
     const std::optional<double> &robot_bound = answer.robot_bound;
     if (!ie_floors_ || !robot_bound || !std::isfinite(*robot_bound))
         return;
+    const ObjectiveWeights &w = problem_.weights;
+    std::vector<std::optional<double>> human_optimum(problem_.tasks.size());
+    {
+        std::lock_guard lock(human_optima_mutex_);
+        human_optima_.inherit(configuration, human_optimum);
+    }
+    if (human_optimum[task] && *human_optimum[task] >= *robot_bound) { // as solving would say
+        answer.ie_floor = least_ie(w.distance);
+        return;
+    }
     ModelPair models = configured_models(problem_, configuration, task);
     PlanOutcome human = solve_model(models.human_domain, models.human_problem, cache_, deadline);
     if (human.status != PlanStatus::SOLVED)
         return;
-    const ObjectiveWeights &w = problem_.weights;
+    human_optimum.assign(problem_.tasks.size(), std::nullopt);
+    human_optimum[task] = static_cast<double>(human.cost);
+    {
+        std::lock_guard lock(human_optima_mutex_);
+        human_optima_.remember(configuration, human_optimum);
+    }
     answer.ie_floor = ie_floor(*robot_bound, static_cast<double>(human.cost), w.distance);
     // Above the least IE, the human's plan costs people less than pi_R (ie_floor's argument).
     if (behaviour_of(w.behaviour).may_explain && *answer.ie_floor > least_ie(w.distance))

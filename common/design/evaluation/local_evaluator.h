@@ -12,6 +12,9 @@
 #include "design/evaluation/dispatcher.h"
 #include "design/evaluation/evaluator.h"
 #include "design/evaluation/plan_cache.h"
+#include "design/search/rising_bounds.h"
+
+#include <mutex>
 
 namespace envdesign::design {
 
@@ -47,6 +50,11 @@ private:
     PlanCache cache_;
     bool ie_floors_; // before robot_bounds_, which reads it
     bool robot_bounds_;
+    // c_H* of the configurations the floor jobs solved: a subset's c_H* bounds a configuration
+    // one human-restricting modification larger (rising_bounds.h), and where it reaches the
+    // robot bound the floor is the least IE without the human's A*.
+    RisingBounds human_optima_;
+    std::mutex human_optima_mutex_;
     long long task_evaluations_ = 0;
 };
 

@@ -55,7 +55,7 @@ ConfigurationEvaluation StoredEvaluator::from_store(const ConfigurationEvaluatio
         if (!e.tasks[t])
             e.tasks[t] = find(e.configuration, t);
         // The witness search bounds supersets with it; a bound the search inherited
-        // (robot_bounds.h) gives way to a stored one at least as great, with its floor.
+        // (rising_bounds.h) gives way to a stored one at least as great, with its floor.
         if (!e.ie_floors[t]) {
             auto bound = store_.find_robot_bound(e.configuration, key(t));
             if (bound && (!e.robot_cost_bounds[t] || *e.robot_cost_bounds[t] <= bound->cost)) {

@@ -178,8 +178,8 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
                 index_edit(i, edit, side);
                 if (edit.kind != EditKind::ADD_PREDICATE)
                     (side == ROBOT ? c.edits_robot : c.edits_human) = true;
-                if (!e.restricting && side == ROBOT)
-                    c.robot_restricting = false;
+                if (!e.restricting)
+                    (side == ROBOT ? c.robot_restricting : c.human_restricting) = false;
                 c.adding = c.adding && e.adding;
                 if (!e.restricting && c.restricting) {
                     c.restricting = false;
@@ -192,6 +192,8 @@ TouchIndex::TouchIndex(const DesignProblem &problem) : problem_(problem) {
         // bounds the robot's cost, not the witnesses.
         if (!c.robot_restricting && gated_twin_restricting(problem, i, true))
             c.robot_restricting = true;
+        if (!c.human_restricting && gated_twin_restricting(problem, i, false))
+            c.human_restricting = true;
         classes_.push_back(c);
     }
 }

@@ -47,8 +47,9 @@ struct ModificationClass {
     // The robot's optimal cost never drops with it: every edit of the robot's model is
     // restricting, or they only gate (gated_twins.h).
     bool robot_restricting = true;
-    bool edits_robot = false; // it edits the robot's model at all
-    bool edits_human = false; // it edits the human's model at all
+    bool human_restricting = true; // the same for the human's model and c_H*
+    bool edits_robot = false;      // it edits the robot's model at all
+    bool edits_human = false;      // it edits the human's model at all
     // Every edit only adds plans and never makes one dearer, whatever else is added (the
     // mirror of the restricting rules: more atoms of a predicate nothing reads negatively,
     // fewer of one nothing reads positively, a precondition or goal removed). A new lane.
@@ -85,6 +86,13 @@ public:
         std::vector<bool> out;
         for (const auto &c : classes_)
             out.push_back(c.robot_restricting);
+        return out;
+    }
+    // The same for c_H* (ModificationClass::human_restricting).
+    std::vector<bool> human_restricting() const {
+        std::vector<bool> out;
+        for (const auto &c : classes_)
+            out.push_back(c.human_restricting);
         return out;
     }
 

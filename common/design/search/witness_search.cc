@@ -2,7 +2,7 @@
 
 #include "design/behaviour/behaviour.h"
 #include "design/search/open_list.h"
-#include "design/search/robot_bounds.h"
+#include "design/search/rising_bounds.h"
 #include "design/search/witness_bound.h"
 #include "design/search/witness_learning.h"
 
@@ -427,7 +427,7 @@ private:
     const std::function<void(const SearchProgress &)> &progress_;
     TouchIndex index_;
     witness::SupersetBound bound_;
-    RobotBoundMemory robot_bound_memory_; // for children queued before their parent is known
+    RisingBounds robot_bound_memory_; // for children queued before their parent is known
     DesignResult result_;
     Ranking ranking_; // the N best (options.ranking)
     witness::DesignLearner learner_;

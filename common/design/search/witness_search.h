@@ -63,7 +63,7 @@ search_explaining_by_hitting_sets(const DesignProblem &problem, Evaluator &evalu
 // robot_behaviour EXPLAINING where the phase does not prove the answer: the best-first queue
 // with every modification weighed with every design (no witness lemma, so no task is kept from
 // a subset), each design bounded by its robot bounds (carried up robot-restricting
-// modifications, robot_bounds.h), IE floors and explanation floors. Exact like the exhaustive
+// modifications, rising_bounds.h), IE floors and explanation floors. Exact like the exhaustive
 // search, whose bounds these are, but the least bound first: a good design is met early and
 // the robot's A* is skipped where a subset's bound stands in.
 DesignResult search_every_design(const DesignProblem &problem, Evaluator &evaluator,

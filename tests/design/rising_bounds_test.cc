@@ -1,7 +1,7 @@
-// RobotBoundMemory: a configuration starts from the robot bounds of its subsets one
+// RisingBounds: a configuration starts from the robot bounds of its subsets one
 // robot-restricting modification smaller, and from nothing else.
 
-#include "design/search/robot_bounds.h"
+#include "design/search/rising_bounds.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +10,8 @@ namespace {
 
 using Bounds = std::vector<std::optional<double>>;
 
-TEST(RobotBoundMemory, InheritsOnlyAcrossRobotRestrictingModifications) {
-    RobotBoundMemory memory({true, false, true}); // modification 1 may lower c_R*
+TEST(RisingBounds, InheritsOnlyAcrossRobotRestrictingModifications) {
+    RisingBounds memory({true, false, true}); // modification 1 may lower c_R*
     memory.remember({}, {10.0, std::nullopt});
     memory.remember({0}, {14.0, 9.0});
     memory.remember({1}, {3.0, 3.0});
@@ -31,6 +31,13 @@ TEST(RobotBoundMemory, InheritsOnlyAcrossRobotRestrictingModifications) {
     Bounds kept{20.0, 1.0}; // a greater bound already known stays
     memory.inherit({0, 2}, kept);
     EXPECT_EQ(kept, (Bounds{20.0, 9.0}));
+
+    // Remembered again, one task at a time (the evaluator's floor jobs): each keeps its greatest.
+    memory.remember({0}, {std::nullopt, 11.0});
+    memory.remember({0}, {13.0, std::nullopt});
+    Bounds merged;
+    memory.inherit({0, 2}, merged);
+    EXPECT_EQ(merged, (Bounds{14.0, 11.0}));
 }
 
 } // namespace
