@@ -1,5 +1,6 @@
 #include "cluster/lcm_evaluator.h"
 
+#include "design/behaviour/behaviour.h"
 #include "design/behaviour/explicability.h"
 #include "envdesign/evaluation_t.hpp"
 #include "wire/job_messages.h"
@@ -30,7 +31,8 @@ void LcmEvaluator::evaluate(const std::vector<design::ConfigurationEvaluation> &
                             const design::Deadline &deadline,
                             const design::EvaluationCallbacks &callbacks) {
     design::Dispatcher dispatcher(configurations, static_cast<int>(problem_.tasks.size()),
-                                  robot_bounds_, ie_floors_, callbacks);
+                                  robot_bounds_, ie_floors_, callbacks,
+                                  design::behaviour_of(problem_.weights.behaviour).may_explain);
     Batch batch{configurations, dispatcher, {}};
     std::optional<Clock::time_point> give_up_at;
     while (true) {

@@ -162,5 +162,39 @@ TEST(Dispatcher, AGivenBoundTravelsWithItsFloorJob) {
     EXPECT_EQ(r.done[0].ie_floors[0], 54.6);
 }
 
+// Exact bounds first (the explaining robot): a configuration that survives its given bounds
+// asks each again without it before any task is evaluated, and the exact one (with its floor)
+// may abandon it.
+TEST(Dispatcher, ExactBoundsFirstReplaceGivenOnes) {
+    Recorder r;
+    double limit = 10;
+    r.callbacks.abandon = [&](const ConfigurationEvaluation &p) {
+        return p.robot_cost_bounds[0] && *p.robot_cost_bounds[0] > limit;
+    };
+    r.callbacks.done = [&](ConfigurationEvaluation e) { r.done.push_back(std::move(e)); };
+    ConfigurationEvaluation e = unevaluated({1});
+    e.robot_cost_bounds = {8.0};
+    Dispatcher d({e}, 1, true, true, r.callbacks, true);
+    Job floor_job = *d.next_job();
+    ASSERT_TRUE(floor_job.robot_bound); // the floor first, with the bound given
+    d.receive({floor_job, std::nullopt, 2.0, {}});
+    Job exact = *d.next_job();
+    EXPECT_EQ(exact.kind, JobKind::ROBOT_BOUND);
+    EXPECT_FALSE(exact.robot_bound); // now c_R* itself
+    EXPECT_FALSE(d.next_job());      // no task before it is back
+    d.receive({exact, 12.0, 7.0, {}});
+    ASSERT_EQ(r.done.size(), 1u);
+    EXPECT_EQ(r.done[0].status, EvaluationStatus::CUT_OFF);
+    EXPECT_EQ(r.done[0].robot_cost_bounds[0], 12.0);
+    EXPECT_EQ(r.done[0].ie_floors[0], 7.0);
+
+    // Without the option the task is evaluated on the given bound.
+    r.done.clear();
+    Dispatcher plain({e}, 1, true, true, r.callbacks);
+    Job job = *plain.next_job();
+    plain.receive({job, std::nullopt, 2.0, {}});
+    EXPECT_EQ(plain.next_job()->kind, JobKind::EXPLICABILITY);
+}
+
 } // namespace
 } // namespace envdesign::design

@@ -11,7 +11,8 @@ bool asks_robot_bounds(const DesignProblem &problem) {
 }
 
 Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks,
-                       bool robot_bounds, bool ie_floors, const EvaluationCallbacks &callbacks)
+                       bool robot_bounds, bool ie_floors, const EvaluationCallbacks &callbacks,
+                       bool exact_bounds_first)
     : callbacks_(callbacks), robot_bounds_(robot_bounds), state_(batch), progress_(batch.size()) {
     for (std::size_t c = 0; c < state_.size(); ++c) {
         ConfigurationEvaluation &e = state_[c];
@@ -28,6 +29,8 @@ Dispatcher::Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int ta
             bool floor_needed = ie_floors && given && std::isfinite(*given) && !e.ie_floors[t];
             if (robot_bounds_ && (!given || floor_needed))
                 progress_[c].bounds_needed.push_back(t);
+            if (robot_bounds_ && given && exact_bounds_first)
+                progress_[c].exact_needed.push_back(t);
         }
     }
 }
@@ -60,6 +63,18 @@ std::optional<Job> Dispatcher::next_job_of(int c) {
     }
     if (p.bounds_known < bounds || p.tasks_sent == needed(p))
         return std::nullopt; // waiting for answers
+    int exact = static_cast<int>(p.exact_needed.size());
+    if (p.exact_known < exact) {
+        if (p.exact_sent == 0 && abandon(c)) {
+            stop(c, EvaluationStatus::CUT_OFF);
+            finish_if_idle(c);
+            return std::nullopt;
+        }
+        if (p.exact_sent == exact)
+            return std::nullopt; // waiting for answers
+        ++p.in_flight;
+        return Job{c, p.exact_needed[p.exact_sent++], JobKind::ROBOT_BOUND, std::nullopt};
+    }
     if (abandon(c)) {
         stop(c, EvaluationStatus::CUT_OFF);
         finish_if_idle(c);
@@ -76,11 +91,15 @@ void Dispatcher::receive(JobAnswer a) {
     Progress &p = progress_[c];
     --p.in_flight;
     if (a.job.kind == JobKind::ROBOT_BOUND) {
-        ++p.bounds_known;
+        // Exact bounds are asked only once every first bound is back.
+        bool exact = p.exact_sent > 0;
+        ++(exact ? p.exact_known : p.bounds_known);
         if (a.robot_bound) // else keep a given one
             state_[c].robot_cost_bounds[a.job.task] = a.robot_bound;
-        state_[c].ie_floors[a.job.task] = a.ie_floor;
-        state_[c].explanation_floors[a.job.task] = a.explanation_floor;
+        if (a.ie_floor || !exact) { // an exact bound's floor replaces the one it raises
+            state_[c].ie_floors[a.job.task] = a.ie_floor;
+            state_[c].explanation_floors[a.job.task] = a.explanation_floor;
+        }
     } else if (a.explicability.status == ExplicabilityStatus::LIMIT) {
         stop(c, EvaluationStatus::LIMIT);
     } else {

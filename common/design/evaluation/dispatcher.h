@@ -50,9 +50,13 @@ public:
     // `robot_bounds`: whether to ask for ROBOT_BOUND jobs at all (asks_robot_bounds);
     // `ie_floors`: whether their answers carry IE floors (ie_floors_hold), so that a task whose
     // robot bound is given is still asked for its floor. `callbacks` must outlive the
-    // dispatcher.
+    // dispatcher. `exact_bounds_first`: a configuration that survives its bounds has each given
+    // (inherited) robot bound replaced by c_R* before a task is evaluated, another chance to
+    // abandon it; for evaluations that find c_R* anyway (the explaining robot's pi_R), whose
+    // robot A* is then a plan-cache hit.
     Dispatcher(const std::vector<ConfigurationEvaluation> &batch, int tasks, bool robot_bounds,
-               bool ie_floors, const EvaluationCallbacks &callbacks);
+               bool ie_floors, const EvaluationCallbacks &callbacks,
+               bool exact_bounds_first = false);
 
     // The next job to send, or nullopt when nothing can be sent before more answers come.
     std::optional<Job> next_job();
@@ -63,8 +67,11 @@ public:
 private:
     struct Progress {
         std::vector<int> bounds_needed; // tasks whose robot bound is asked for
-        std::vector<int> tasks_needed;  // tasks to evaluate
-        int bounds_sent = 0;            // of bounds_needed
+        std::vector<int> exact_needed;  // tasks whose given bound is asked for again, exactly
+        int exact_sent = 0;
+        int exact_known = 0;
+        std::vector<int> tasks_needed; // tasks to evaluate
+        int bounds_sent = 0;           // of bounds_needed
         int bounds_known = 0;
         int tasks_sent = 0; // of tasks_needed
         int in_flight = 0;

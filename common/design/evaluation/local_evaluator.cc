@@ -105,7 +105,7 @@ JobAnswer LocalEvaluator::answer(const Configuration &configuration, const Job &
 void LocalEvaluator::evaluate(const std::vector<ConfigurationEvaluation> &batch,
                               const Deadline &deadline, const EvaluationCallbacks &callbacks) {
     Dispatcher dispatcher(batch, static_cast<int>(problem_.tasks.size()), robot_bounds_, ie_floors_,
-                          callbacks);
+                          callbacks, behaviour_of(problem_.weights.behaviour).may_explain);
     Channel channel;
     std::vector<std::thread> threads;
     for (int i = 0; i < workers_; ++i) {
