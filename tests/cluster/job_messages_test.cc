@@ -19,11 +19,12 @@ design::DesignProblem paper() {
                                      "/tests/data/paper/blocksworld/20/design-t1.textproto");
 }
 
-envdesign::job_t through_the_wire(const envdesign::job_t &m) {
+// `m` encoded and decoded again, as a planner or the coordinator receives it.
+template <class Message> Message through_the_wire(const Message &m) {
     std::vector<std::uint8_t> bytes(m.getEncodedSize());
     EXPECT_EQ(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())),
               static_cast<int>(bytes.size()));
-    envdesign::job_t out;
+    Message out;
     EXPECT_EQ(out.decode(bytes.data(), 0, static_cast<int>(bytes.size())),
               static_cast<int>(bytes.size()));
     return out;
@@ -62,16 +63,6 @@ TEST(JobMessages, ABadRobotBoundIsRejected) {
     ASSERT_TRUE(job_problem(explicability, problem));
 }
 
-envdesign::evaluation_t evaluation_through_the_wire(const envdesign::evaluation_t &m) {
-    std::vector<std::uint8_t> bytes(m.getEncodedSize());
-    EXPECT_EQ(m.encode(bytes.data(), 0, static_cast<int>(bytes.size())),
-              static_cast<int>(bytes.size()));
-    envdesign::evaluation_t out;
-    EXPECT_EQ(out.decode(bytes.data(), 0, static_cast<int>(bytes.size())),
-              static_cast<int>(bytes.size()));
-    return out;
-}
-
 // The explaining robot's explanation floor travels with the IE floor, and only with it.
 TEST(JobMessages, AnExplanationFloorTravelsWithItsIeFloor) {
     design::Job job{0, 1, design::JobKind::ROBOT_BOUND, std::nullopt};
@@ -79,7 +70,7 @@ TEST(JobMessages, AnExplanationFloorTravelsWithItsIeFloor) {
     envdesign::evaluation_t e{};
     put_answer(answer, e);
     e.kind = envdesign::job_t::KIND_ROBOT_BOUND;
-    envdesign::evaluation_t back_message = evaluation_through_the_wire(e);
+    envdesign::evaluation_t back_message = through_the_wire(e);
     EXPECT_FALSE(evaluation_problem(back_message, envdesign::job_t::KIND_ROBOT_BOUND));
     design::JobAnswer back = job_answer(job, back_message);
     ASSERT_TRUE(back.explanation_floor);

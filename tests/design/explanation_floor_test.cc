@@ -5,6 +5,7 @@
 #include "design/reconciliation/explanation_floor.h"
 #include "design/reconciliation/minimal_explanation.h"
 #include "explaining_generator.h"
+#include "generated_models.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
 #include "validate/plan_validator.h"
@@ -16,39 +17,18 @@ namespace {
 
 using testing::generate_pair;
 using testing::GeneratedPair;
-
-ModelPair floor_test_models(const GeneratedPair &g) {
-    ModelPair m;
-    m.robot_domain =
-        pddl::parse_domain(pddl::read_sexpr(pair_domain(g, g.robot), "robot-domain"), "rd");
-    m.human_domain =
-        pddl::parse_domain(pddl::read_sexpr(pair_domain(g, g.human), "human-domain"), "hd");
-    m.robot_problem = pddl::parse_problem(pddl::read_sexpr(pair_problem(g, g.robot, "t"), "rp"),
-                                          "rp", m.robot_domain);
-    m.human_problem = pddl::parse_problem(pddl::read_sexpr(pair_problem(g, g.human, "t"), "hp"),
-                                          "hp", m.human_domain);
-    return m;
-}
+using testing::models_of;
 
 // The least size of a subset of every difference (relevant or not) after which `plan` is no
 // longer valid at a human cost below `below`, trying all 2^n; -1 if none does that.
 int least_stopping_subset(const ModelPair &m, const std::vector<ModelDifference> &all,
                           const std::vector<std::string> &plan, double below) {
-    int n = static_cast<int>(all.size()), best = -1;
-    for (unsigned mask = 0; mask < (1u << n); ++mask) {
-        int size = __builtin_popcount(mask);
-        if (best >= 0 && size >= best)
-            continue;
-        std::vector<int> chosen;
-        for (int i = 0; i < n; ++i)
-            if (mask & (1u << i))
-                chosen.push_back(i);
-        ModelPair told = told_models(m, all, chosen);
-        auto v = validate::validate_plan(told.human_domain, told.human_problem, plan);
-        if (!v.valid || static_cast<double>(v.cost) >= below)
-            best = size;
-    }
-    return best;
+    return testing::smallest_passing_subset(
+        static_cast<int>(all.size()), [&](const std::vector<int> &chosen) {
+            ModelPair told = told_models(m, all, chosen);
+            auto v = validate::validate_plan(told.human_domain, told.human_problem, plan);
+            return !v.valid || static_cast<double>(v.cost) >= below;
+        });
 }
 
 // pi_R's human cost once every difference is told (P_H then has P_R's schemas, initial state
@@ -68,7 +48,7 @@ TEST(ExplanationFloor, EqualsEverySubsetAndNeverExceedsTheExplanation) {
     for (unsigned seed = 0; seed < 300; ++seed) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         GeneratedPair g = generate_pair(seed);
-        ModelPair m = floor_test_models(g);
+        ModelPair m = models_of(g);
         PlanCache planner(planning::PlannerOptions{});
         PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
         PlanOutcome human = solve_model(m.human_domain, m.human_problem, planner, Deadline{});

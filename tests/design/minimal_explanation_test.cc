@@ -7,6 +7,7 @@
 #include "design/reconciliation/minimal_explanation.h"
 #include "example_paths.h"
 #include "explaining_generator.h"
+#include "generated_models.h"
 #include "pddl/parser.h"
 #include "pddl/sexpr.h"
 #include "validate/plan_validator.h"
@@ -21,37 +22,16 @@ namespace {
 
 using testing::generate_pair;
 using testing::GeneratedPair;
-
-ModelPair models_of(const GeneratedPair &g) {
-    ModelPair m;
-    m.robot_domain =
-        pddl::parse_domain(pddl::read_sexpr(pair_domain(g, g.robot), "robot-domain"), "rd");
-    m.human_domain =
-        pddl::parse_domain(pddl::read_sexpr(pair_domain(g, g.human), "human-domain"), "hd");
-    m.robot_problem = pddl::parse_problem(pddl::read_sexpr(pair_problem(g, g.robot, "t"), "rp"),
-                                          "rp", m.robot_domain);
-    m.human_problem = pddl::parse_problem(pddl::read_sexpr(pair_problem(g, g.human, "t"), "hp"),
-                                          "hp", m.human_domain);
-    return m;
-}
+using testing::models_of;
 
 // The smallest size of a subset of `all` that passes the check, by trying all 2^n of them
 // (in order of the bit masks, not by size); -1 if none does.
 int smallest_by_every_subset(const ModelPair &m, const std::vector<ModelDifference> &all,
                              const std::vector<std::string> &plan, PlanCache &planner) {
-    int n = static_cast<int>(all.size()), best = -1;
-    for (unsigned mask = 0; mask < (1u << n); ++mask) {
-        int size = __builtin_popcount(mask);
-        if (best >= 0 && size >= best)
-            continue;
-        std::vector<int> chosen;
-        for (int i = 0; i < n; ++i)
-            if (mask & (1u << i))
-                chosen.push_back(i);
-        if (*plan_optimal_for_human(told_models(m, all, chosen), plan, planner, Deadline{}))
-            best = size;
-    }
-    return best;
+    return testing::smallest_passing_subset(
+        static_cast<int>(all.size()), [&](const std::vector<int> &chosen) {
+            return *plan_optimal_for_human(told_models(m, all, chosen), plan, planner, Deadline{});
+        });
 }
 
 constexpr int SEEDS = 300;
