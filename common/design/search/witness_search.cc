@@ -1,7 +1,7 @@
 #include "design/search/witness_search.h"
 
 #include "design/behaviour/behaviour.h"
-#include "design/search/open_list.h"
+#include "design/search/witness_queue.h"
 #include "design/search/rising_bounds.h"
 #include "design/search/witness_bound.h"
 #include "design/search/witness_learning.h"
