@@ -82,7 +82,8 @@ void LocalEvaluator::floors(const Configuration &configuration, int task, const 
     human_optimum[task] = static_cast<double>(human.cost);
     {
         std::lock_guard lock(human_optima_mutex_);
-        human_optima_.remember(configuration, human_optimum);
+        if (human_optima_.size() < kHumanOptimaKept) // a planner service keeps its evaluators
+            human_optima_.remember(configuration, human_optimum);
     }
     answer.ie_floor = ie_floor(*robot_bound, static_cast<double>(human.cost), w.distance);
     // Above the least IE, the human's plan costs people less than pi_R (ie_floor's argument).

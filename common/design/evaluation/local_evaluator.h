@@ -54,6 +54,7 @@ private:
     // one human-restricting modification larger (rising_bounds.h), and where it reaches the
     // robot bound the floor is the least IE without the human's A*.
     RisingBounds human_optima_;
+    static constexpr std::size_t kHumanOptimaKept = 1 << 16; // configurations
     std::mutex human_optima_mutex_;
     long long task_evaluations_ = 0;
 };

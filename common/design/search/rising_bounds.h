@@ -30,6 +30,8 @@ public:
     // one rising modification smaller.
     void inherit(const Configuration &configuration,
                  std::vector<std::optional<double>> &bounds) const;
+    // Configurations with bounds kept.
+    std::size_t size() const { return known_.size(); }
 
 private:
     std::vector<bool> rising_;
