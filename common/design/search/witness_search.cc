@@ -1,10 +1,10 @@
 #include "design/search/witness_search.h"
 
 #include "design/behaviour/behaviour.h"
-#include "design/search/witness_queue.h"
 #include "design/search/rising_bounds.h"
 #include "design/search/witness_bound.h"
 #include "design/search/witness_learning.h"
+#include "design/search/witness_queue.h"
 
 #include <algorithm>
 #include <chrono>
