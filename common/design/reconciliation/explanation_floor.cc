@@ -11,11 +11,7 @@ namespace {
 bool still_cheaper(const ModelPair &models, const std::vector<ModelDifference> &differences,
                    const std::vector<int> &told, const std::vector<std::string> &plan,
                    double below) {
-    ModelPair human; // the human's side alone: the validator reads nothing else
-    human.human_domain = models.human_domain;
-    human.human_problem = models.human_problem;
-    for (int d : told)
-        apply_difference(differences[d], models, human);
+    ModelPair human = told_human_model(models, differences, told);
     validate::Validation v = validate::validate_plan(human.human_domain, human.human_problem, plan);
     return v.valid && static_cast<double>(v.cost) < below;
 }

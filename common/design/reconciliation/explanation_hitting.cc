@@ -47,10 +47,7 @@ bool restricting(const ModelDifference &d, const std::set<std::string> &negative
 
 bool valid_with(const ModelPair &models, const ExplanationSearch &search, int d,
                 const std::vector<std::string> &plan) {
-    ModelPair told; // the human's side alone: the validator reads nothing else
-    told.human_domain = models.human_domain;
-    told.human_problem = models.human_problem;
-    apply_difference(search.differences[d], models, told);
+    ModelPair told = told_human_model(models, search.differences, {d});
     return validate::validate_plan(told.human_domain, told.human_problem, plan).valid;
 }
 

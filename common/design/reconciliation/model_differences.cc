@@ -249,4 +249,14 @@ ModelPair told_models(const ModelPair &models, const std::vector<ModelDifference
     return told;
 }
 
+ModelPair told_human_model(const ModelPair &models, const std::vector<ModelDifference> &differences,
+                           const std::vector<int> &chosen) {
+    ModelPair told;
+    told.human_domain = models.human_domain;
+    told.human_problem = models.human_problem;
+    for (int i : chosen)
+        apply_difference(differences[i], models, told);
+    return told;
+}
+
 } // namespace envdesign::design

@@ -52,5 +52,9 @@ void apply_difference(const ModelDifference &difference, const ModelPair &models
 // The human's model of `models` with the differences `chosen` applied.
 ModelPair told_models(const ModelPair &models, const std::vector<ModelDifference> &differences,
                       const std::vector<int> &chosen);
+// The same, the human's side alone (the robot's left empty): all the plan validator reads, for
+// checks that copy the models many times.
+ModelPair told_human_model(const ModelPair &models, const std::vector<ModelDifference> &differences,
+                           const std::vector<int> &chosen);
 
 } // namespace envdesign::design
