@@ -36,6 +36,7 @@
 #include "design/behaviour/explicability.h"
 #include "design/evaluation/local_evaluator.h"
 #include "design/search/design_search.h"
+#include "design/search/measured_floors.h"
 #include "design/search/witness.h"
 #include "spec/design_spec.h"
 
@@ -1416,6 +1417,83 @@ TEST(WitnessAgreement, MixedModificationsAgreeWithExhaustive) {
         return;
     EXPECT_GE(proofs_with_adding, seeds / 4);
     EXPECT_GE(adding_chosen, 1);
+}
+
+// The floors measured in a design with additions (measured_floors.h) hold in every design
+// within it, checked against every design evaluated in full on the mixed problems: c_H(pi)
+// and c_R* there are never below them. The designs within reach beyond D's own subsets (more
+// restricting modifications; modifications that leave the robot's model alone) are counted, so
+// the check covers what the phase relies on.
+TEST(WitnessAgreement, MeasuredFloorsHoldInEveryDesignWithin) {
+    using witness::measured_floor, witness::Within;
+    int seeds = std::min(seeds_from_environment(), 20);
+    long long human_checks = 0, robot_checks = 0, beyond_subsets = 0, failures = 0;
+    for (int s = 0; s < seeds; ++s) {
+        unsigned seed = 200000u + static_cast<unsigned>(s);
+        Generated g = Generator(seed, false, true).run();
+        fs::path dir = directory_for(seed);
+        fs::remove_all(dir);
+        DesignProblem problem = load_design_problem(write_spec(g, dir, false).string());
+        TouchIndex index(problem);
+        int n = index.size(), tasks = static_cast<int>(problem.tasks.size());
+        std::vector<int> adding;
+        std::vector<bool> edits_robot(n);
+        for (int m = 0; m < n; ++m) {
+            if (!index.of(m).restricting)
+                adding.push_back(m);
+            edits_robot[m] = index.of(m).edits_robot;
+        }
+        LocalEvaluator evaluator(problem, 1);
+        std::vector<std::vector<TaskExplicability>> value(1u << n);
+        std::vector<std::vector<std::optional<double>>> robot(1u << n);
+        auto design_of = [&](unsigned mask) {
+            Configuration c;
+            for (int i = 0; i < n; ++i)
+                if (mask & (1u << i))
+                    c.push_back(i);
+            return c;
+        };
+        for (unsigned mask = 0; mask < (1u << n); ++mask)
+            for (int t = 0; t < tasks; ++t) {
+                value[mask].push_back(evaluator.evaluate_task(design_of(mask), t, Deadline{}));
+                robot[mask].push_back(evaluator.robot_cost_bound(design_of(mask), t, Deadline{}));
+            }
+        auto within = [&](const Within &w, const Configuration &c) {
+            return std::includes(c.begin(), c.end(), w.restricting.begin(), w.restricting.end()) &&
+                   std::none_of(w.outside.begin(), w.outside.end(),
+                                [&](int e) { return std::binary_search(c.begin(), c.end(), e); });
+        };
+        for (unsigned d = 0; d < (1u << n); ++d) {
+            std::vector<const TaskExplicability *> evaluations;
+            for (const TaskExplicability &e : value[d])
+                evaluations.push_back(&e);
+            auto floor = measured_floor(design_of(d), adding, edits_robot, evaluations, robot[d],
+                                        true);
+            if (!floor)
+                continue;
+            for (unsigned s2 = 0; s2 < (1u << n); ++s2) {
+                Configuration c = design_of(s2);
+                bool subset = (s2 & ~d) == 0;
+                for (int t = 0; t < tasks; ++t) {
+                    if (floor->human[t] && within(floor->human_within, c)) {
+                        ++human_checks, beyond_subsets += !subset;
+                        failures += value[s2][t].human_plan_cost < *floor->human[t];
+                    }
+                    if (floor->robot[t] && within(floor->robot_within, c)) {
+                        ++robot_checks, beyond_subsets += !subset;
+                        failures += robot[s2][t].value_or(INF) < *floor->robot[t];
+                    }
+                }
+            }
+        }
+        fs::remove_all(dir);
+    }
+    std::cout << "[ agreement ] measured floors: " << seeds << " seeds, " << human_checks
+              << " human and " << robot_checks << " robot checks (" << beyond_subsets
+              << " beyond the design's subsets), " << failures << " below a floor" << std::endl;
+    EXPECT_EQ(failures, 0);
+    EXPECT_GT(human_checks, 0);
+    EXPECT_GT(beyond_subsets, 0);
 }
 
 // A directed case: a fresh predicate declared by two modifications. "rule" (people are told

@@ -219,30 +219,87 @@ double HittingSetMaster::add_fixed_floor(Program &program, const std::vector<Lev
     return capped;
 }
 
-// A task whose floor falls when adding modifications are chosen: term T_t >= V(F_k, D_j)
-// (1 - u_(k+1) - y_(j+1)) for every floor level k and plan level j (hitting_set.h).
-void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vector<Level> &levels,
-                                         double cap, int explains) const {
-    std::vector<int> y = add_plan_levels(program, levels, std::vector<double>(levels.size(), 0.0));
-    std::vector<double> floors{root_.floor[t]}; // F_0 > F_1 > ...
-    for (const UseFloor &f : root_.lower_floors[t])
-        if (f.cost < root_.floor[t])
-            floors.push_back(f.cost);
-    std::sort(floors.begin() + 1, floors.end(), std::greater<>());
-    floors.erase(std::unique(floors.begin(), floors.end()), floors.end());
-    std::vector<int> u{-1}; // u_0 = 1: the floor is at most F_0 in every design
-    for (std::size_t k = 1; k < floors.size(); ++k) {
-        u.push_back(program.column(0.0));
-        std::vector<int> cols{u[k]};
+// The levels a task's floor may fall to, from `top`: every L(t, e) of `lowering` and every
+// measured floor below it. Binary u_k says the floor may be at most F_k: u_k <= the x_e that
+// bring it there, u_k <= u_(k-1), and, per measured design D whose floor is above F_k,
+// u_k <= (additions outside D's) + (D's restricting ones left out): a design within D keeps
+// D's floor (measured_floors.h). Each u_k costs -saving_weight (F_(k-1) - F_k).
+HittingSetMaster::FloorLevels
+HittingSetMaster::add_floor_levels(Program &program, int t, double top,
+                                   const std::vector<UseFloor> &lowering,
+                                   const std::vector<MeasuredFloor> &measured, bool robot,
+                                   double saving_weight) const {
+    auto floor_of = [&](const MeasuredFloor &d) -> const std::optional<double> & {
+        return robot ? d.robot[t] : d.human[t];
+    };
+    FloorLevels out{{top}, {-1}};
+    for (const UseFloor &f : lowering)
+        if (f.cost < top)
+            out.floors.push_back(f.cost);
+    for (const MeasuredFloor &d : measured)
+        if (floor_of(d) && *floor_of(d) < top)
+            out.floors.push_back(*floor_of(d));
+    std::sort(out.floors.begin() + 1, out.floors.end(), std::greater<>());
+    out.floors.erase(std::unique(out.floors.begin(), out.floors.end()), out.floors.end());
+    for (std::size_t k = 1; k < out.floors.size(); ++k) {
+        // No weight: no saving (a level of -INF, COST_OPTIMAL's floor dropped, gives 0 x INF).
+        double saving = saving_weight == 0 ? 0.0 : saving_weight * (out.floors[k - 1] - out.floors[k]);
+        int u = program.column(-saving);
+        out.columns.push_back(u);
+        std::vector<int> cols{u};
         std::vector<double> coefs{1.0};
-        for (const UseFloor &f : root_.lower_floors[t])
-            if (f.cost <= floors[k])
+        for (const UseFloor &f : lowering)
+            if (f.cost <= out.floors[k])
                 cols.push_back(f.modification), coefs.push_back(-1.0);
         program.row(cols, coefs, 'L', 0.0);
         if (k > 1)
-            program.row({u[k], u[k - 1]}, {1.0, -1.0}, 'L', 0.0);
+            program.row({u, out.columns[k - 1]}, {1.0, -1.0}, 'L', 0.0);
     }
+    // A measured floor binds the first level below it (the nesting carries it down).
+    for (const MeasuredFloor &d : measured) {
+        const std::optional<double> &floor = floor_of(d);
+        if (!floor)
+            continue;
+        std::size_t k = 1;
+        while (k < out.floors.size() && !(out.floors[k] < *floor))
+            ++k;
+        if (k >= out.floors.size())
+            continue;
+        const Within &within = robot ? d.robot_within : d.human_within;
+        std::vector<int> cols{out.columns[k]};
+        std::vector<double> coefs{1.0};
+        for (int e : within.outside)
+            cols.push_back(e), coefs.push_back(-1.0);
+        for (int r : within.restricting)
+            cols.push_back(r), coefs.push_back(1.0);
+        program.row(cols, coefs, 'L', static_cast<double>(within.restricting.size()));
+    }
+    return out;
+}
+
+// A task whose floor falls when adding modifications are chosen: term T_t >= V(F_k, D_j)
+// (1 - u_(k+1) - y_(j+1)) for every floor level k and plan level j (hitting_set.h); where the
+// robot's floor bounds c_H(pi) too, the same rows with its levels.
+void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vector<Level> &levels,
+                                         double cap, const std::vector<MeasuredFloor> &measured,
+                                         const std::optional<FloorLevels> &robot,
+                                         int explains) const {
+    std::vector<int> y = add_plan_levels(program, levels, std::vector<double>(levels.size(), 0.0));
+    FloorLevels falls =
+        add_floor_levels(program, t, root_.floor[t], root_.lower_floors[t], measured, false, 0.0);
     int term = program.column(1.0, cap, false);
+    add_term_rows(program, t, term, falls, levels, y, cap, explains);
+    if (robot && root_.robot_floor_bounds_human)
+        add_term_rows(program, t, term, *robot, levels, y, cap, explains);
+}
+
+// T_t >= V(F_k, D_j) (1 - u_(k+1) - y_(j+1)) (- z: explaining instead, where the other
+// option's bound holds) for the levels of one floor.
+void HittingSetMaster::add_term_rows(Program &program, int t, int term, const FloorLevels &falls,
+                                     const std::vector<Level> &levels, const std::vector<int> &y,
+                                     double cap, int explains) const {
+    const std::vector<double> &floors = falls.floors;
+    const std::vector<int> &u = falls.columns;
     for (std::size_t k = 0; k < floors.size(); ++k) {
         for (std::size_t j = 0; j <= y.size(); ++j) {
             if (j >= levels.size())
@@ -256,7 +313,7 @@ void HittingSetMaster::add_falling_floor(Program &program, int t, const std::vec
                 cols.push_back(u[k + 1]), coefs.push_back(value);
             if (j < y.size())
                 cols.push_back(y[j]), coefs.push_back(value);
-            if (explains >= 0) // explaining instead: the other option's bound holds
+            if (explains >= 0)
                 cols.push_back(explains), coefs.push_back(value);
             program.row(cols, coefs, 'G', value);
         }
@@ -316,32 +373,16 @@ int HittingSetMaster::add_voided_column(Program &program) const {
 }
 
 // A task whose robot floor c_R* falls when adding modifications are chosen: the constant
-// counts it at c_R* with no modification, and v_k (nested, v_k <= the x_e that bring it to
-// R_k) saves kappa T p (R_(k-1) - R_k).
-void HittingSetMaster::add_falling_robot_floor(Program &program, int t) const {
+// counts it at c_R* with no modification, and each level reached saves kappa T p (R_(k-1) -
+// R_k) (add_floor_levels).
+std::optional<HittingSetMaster::FloorLevels>
+HittingSetMaster::add_falling_robot_floor(Program &program, int t,
+                                          const std::vector<MeasuredFloor> &measured) const {
     const ObjectiveWeights &w = problem_.weights;
     if (!root_.robot_bounds[t] || root_.settled[t] || problem_.tasks[t].probability <= 0)
-        return;
-    std::vector<double> floors{*root_.robot_bounds[t]}; // R_0 > R_1 > ...
-    for (const UseFloor &f : root_.lower_robot_floors[t])
-        if (f.cost < floors[0])
-            floors.push_back(f.cost);
-    std::sort(floors.begin() + 1, floors.end(), std::greater<>());
-    floors.erase(std::unique(floors.begin(), floors.end()), floors.end());
-    double weight = w.kappa * w.horizon * problem_.tasks[t].probability;
-    int previous = -1;
-    for (std::size_t k = 1; k < floors.size(); ++k) {
-        int v = program.column(-weight * (floors[k - 1] - floors[k]));
-        std::vector<int> cols{v};
-        std::vector<double> coefs{1.0};
-        for (const UseFloor &f : root_.lower_robot_floors[t])
-            if (f.cost <= floors[k])
-                cols.push_back(f.modification), coefs.push_back(-1.0);
-        program.row(cols, coefs, 'L', 0.0);
-        if (previous >= 0)
-            program.row({v, previous}, {1.0, -1.0}, 'L', 0.0);
-        previous = v;
-    }
+        return std::nullopt;
+    return add_floor_levels(program, t, *root_.robot_bounds[t], root_.lower_robot_floors[t],
+                            measured, true, w.kappa * w.horizon * problem_.tasks[t].probability);
 }
 
 // Every cone is left: drop one of its design's modifications or add an escape.
@@ -366,8 +407,9 @@ void HittingSetMaster::exclude(Program &program, const std::vector<Cone> &exclud
     }
 }
 
-HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &excluded, double cutoff,
-                                                 const Deadline &deadline) const {
+HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &excluded,
+                                                 const std::vector<MeasuredFloor> &measured,
+                                                 double cutoff, const Deadline &deadline) const {
     const ObjectiveWeights &w = problem_.weights;
     int n = static_cast<int>(problem_.modifications.size());
     Answer answer;
@@ -385,17 +427,17 @@ HittingSetMaster::Answer HittingSetMaster::least(const std::vector<Cone> &exclud
     double offset = constant_;
     int voided = root_.explaining ? add_voided_column(program) : -1;
     for (int t = 0; t < static_cast<int>(problem_.tasks.size()); ++t) {
-        add_falling_robot_floor(program, t);
+        auto robot = add_falling_robot_floor(program, t, measured);
         std::vector<Level> task_levels = levels(t);
         if (task_levels.empty())
             continue;
         if (root_.explaining)
-            add_falling_floor(program, t, task_levels, cap,
+            add_falling_floor(program, t, task_levels, cap, measured, robot,
                               add_explaining_option(program, t, voided));
         else if (root_.lower_floors[t].empty())
             offset += add_fixed_floor(program, task_levels, cap);
         else
-            add_falling_floor(program, t, task_levels, cap);
+            add_falling_floor(program, t, task_levels, cap, measured, robot);
     }
     exclude(program, excluded);
     program.check(offset);

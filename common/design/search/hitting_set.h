@@ -36,6 +36,7 @@
 #include "design/search/addition_floors.h"
 #include "design/search/deadline.h"
 #include "design/search/explanation_bound.h"
+#include "design/search/measured_floors.h"
 #include "design/search/witness_bound.h"
 
 #include <optional>
@@ -54,6 +55,9 @@ struct RootFacts {
     // Per task, the adding modifications that can bring c_R* to at most `cost`.
     std::vector<std::vector<UseFloor>> lower_robot_floors;
     std::vector<const TaskExplicability *> settled; // tasks no modification can change
+    // Every action costs people at least what it costs the robot (ie_floors_hold): then
+    // c_H(pi) >= c_R(pi) >= c_R*, so the robot's floor is one on c_H(pi) too.
+    bool robot_floor_bounds_human = false;
     // robot_behaviour EXPLAINING: the bound on the explaining option (explanation_bound.h);
     // null otherwise. Each task's term is then the lesser of the two options' bounds.
     const ExplanationBound *explaining = nullptr;
@@ -80,8 +84,10 @@ public:
         bool out_of_range = false; // FAILED: numbers beyond what the solver takes exactly
     };
     // The design outside the cones with the least relaxed objective, if it is at most
-    // `cutoff` (INF: any); NONE when every such design is above it.
-    Answer least(const std::vector<Cone> &excluded, double cutoff, const Deadline &deadline) const;
+    // `cutoff` (INF: any); NONE when every such design is above it. `measured`: floors of
+    // evaluated designs with additions (measured_floors.h), in the floor levels too.
+    Answer least(const std::vector<Cone> &excluded, const std::vector<MeasuredFloor> &measured,
+                 double cutoff, const Deadline &deadline) const;
 
     // The margin above the best objective within which designs are still evaluated.
     static double margin(double best);
@@ -94,16 +100,30 @@ private:
         bool breakable = true;
     };
     class Program;
+    struct FloorLevels {
+        std::vector<double> floors; // F_0 > F_1 > ...
+        std::vector<int> columns;   // u_k for k >= 1 (u_0, always 1, has none: -1)
+    };
     std::vector<Level> levels(int task) const;
     double level_value(int task, double floor, double human_optimum) const;
     double add_fixed_floor(Program &program, const std::vector<Level> &levels, double cap) const;
     void add_falling_floor(Program &program, int task, const std::vector<Level> &levels, double cap,
-                           int explains = -1) const;
+                           const std::vector<MeasuredFloor> &measured,
+                           const std::optional<FloorLevels> &robot, int explains = -1) const;
+    void add_term_rows(Program &program, int task, int term, const FloorLevels &floors,
+                       const std::vector<Level> &levels, const std::vector<int> &y, double cap,
+                       int explains) const;
     int add_explaining_option(Program &program, int task, int voided) const;
     int add_voided_column(Program &program) const;
     std::vector<int> add_plan_levels(Program &program, const std::vector<Level> &levels,
                                      const std::vector<double> &objective) const;
-    void add_falling_robot_floor(Program &program, int task) const;
+    std::optional<FloorLevels>
+    add_falling_robot_floor(Program &program, int task,
+                            const std::vector<MeasuredFloor> &measured) const;
+    FloorLevels add_floor_levels(Program &program, int task, double top,
+                                 const std::vector<UseFloor> &lowering,
+                                 const std::vector<MeasuredFloor> &measured, bool robot,
+                                 double saving_weight) const;
     void exclude(Program &program, const std::vector<Cone> &excluded) const;
 
     const DesignProblem &problem_;

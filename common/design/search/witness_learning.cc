@@ -1,10 +1,13 @@
 #include "design/search/witness_learning.h"
 
 #include "design/behaviour/behaviour.h"
+#include "design/behaviour/explicability.h"
 #include "design/search/addition_floors.h"
 #include "design/search/hitting_set.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <iomanip>
 #include <iterator>
@@ -28,6 +31,31 @@ void DesignLearner::evaluated(const Node &node) {
         root_ = node;
     consider(node.configuration, node.tasks);
     known_.emplace_back(node.configuration, node.tasks);
+    measure(node.configuration, node.tasks, node.robot_bounds);
+}
+
+// Keeps the floors of an evaluated design with additions (measured_floors.h): c_R* always,
+// c_H(pi) where the robot takes the most explicable plan.
+void DesignLearner::measure(const Configuration &design, const std::vector<Record> &records,
+                            const std::vector<std::optional<double>> &robot_bounds) {
+    const Behaviour &b = behaviour_of(problem_.weights.behaviour);
+    std::vector<const TaskExplicability *> tasks;
+    for (const Record &r : records)
+        tasks.push_back(r ? &r->evaluation : nullptr);
+    std::vector<bool> edits_robot(index_.size());
+    for (int m = 0; m < index_.size(); ++m)
+        edits_robot[m] = index_.of(m).edits_robot;
+    auto floor = measured_floor(design, bound_.always(), edits_robot, tasks, robot_bounds,
+                                b.takes_most_explicable_plan && !b.may_explain);
+    if (floor)
+        measured_.push_back(std::move(*floor));
+}
+
+// Whether the design of `additions` alone has its floors measured.
+bool DesignLearner::measured(const Configuration &additions) const {
+    return std::any_of(measured_.begin(), measured_.end(), [&](const MeasuredFloor &f) {
+        return f.human_within.restricting.empty() && f.additions == additions;
+    });
 }
 
 // Meets each task's plans of the human's model that are cheaper than its most explicable
@@ -89,49 +117,6 @@ void DesignLearner::probe_shortcuts() {
                     active.erase(probed[i]); // no cheaper plan is left
         }
     }
-}
-
-Cone cone_of(const DesignProblem &problem, const SupersetBound &bound, const Configuration &design,
-             const std::vector<Record> &records) {
-    if (!behaviour_of(problem.weights.behaviour).value_follows_witnesses)
-        return Cone{design, std::nullopt}; // no lemma there: the design alone
-    Cone cone{design, std::vector<int>{}};
-    for (std::size_t t = 0; t < records.size() && cone.escapes; ++t) {
-        if (problem.tasks[t].probability <= 0)
-            continue;
-        if (!records[t] || !records[t]->touch.known) {
-            cone.escapes.reset();
-            break;
-        }
-        std::vector<int> both;
-        std::set_union(cone.escapes->begin(), cone.escapes->end(), records[t]->touch.all.begin(),
-                       records[t]->touch.all.end(), std::back_inserter(both));
-        cone.escapes = std::move(both);
-    }
-    for (int m : bound.always()) // not restricting or of negative cost: never in a cone
-        if (cone.escapes && !contains(*cone.escapes, m))
-            cone.escapes->insert(std::upper_bound(cone.escapes->begin(), cone.escapes->end(), m),
-                                 m);
-    return cone;
-}
-
-void offer_cone_of(const DesignProblem &problem, const SupersetBound &bound,
-                   const Configuration &design, const std::vector<Record> &records, int max_size,
-                   Ranking &ranking) {
-    Cone cone = cone_of(problem, bound, design, records);
-    if (!cone.escapes)
-        return;
-    std::vector<const TaskExplicability *> tasks;
-    for (const Record &r : records) {
-        if (!r)
-            return;
-        tasks.push_back(&r->evaluation);
-    }
-    std::vector<int> free;
-    for (int m = 0; m < static_cast<int>(problem.modifications.size()); ++m)
-        if (!contains(design, m) && !contains(*cone.escapes, m))
-            free.push_back(m);
-    offer_cone(problem, design, tasks, free, max_size, ranking);
 }
 
 // Excludes `design` and the supersets that rank after it from the hitting-set phase.
@@ -236,6 +221,7 @@ std::optional<RootFacts> DesignLearner::root_facts() {
     }
     facts.lower_floors.resize(tasks_);
     facts.lower_robot_floors.resize(tasks_);
+    facts.robot_floor_bounds_human = ie_floors_hold(problem_);
     if (!bound_.always().empty()) {
         std::string why;
         // COST_OPTIMAL(_BEST_CASE) reads only the robot's floors (cost_optimal_floors).
@@ -302,14 +288,18 @@ bool DesignLearner::prove_by_hitting_sets() {
         // With a ranking, every design that may enter it must be evaluated (or lie in a
         // cone, whose members are offered as they are found): the cutoff is the N-th best.
         double limit = ranking_limit(result_, ranking_);
-        auto answer =
-            master.least(considered_, limit + HittingSetMaster::margin(limit), options_.deadline);
+        auto answer = master.least(considered_, measured_, limit + HittingSetMaster::margin(limit),
+                                   options_.deadline);
         if (answer.status == HittingSetMaster::Answer::NONE) {
             // A design a limit stopped earlier (a probe) is in no cone: it was picked again,
             // or its relaxed objective is above the best. Either way the proof holds.
             limit_seen_ = false;
             lower_bound_ = best;
             note_explanation_plans();
+            if (!measured_.empty())
+                result_.notes.push_back("floors measured in " + std::to_string(measured_.size()) +
+                                        " designs with additions bound the others "
+                                        "(docs/design-search.md)");
             return true;
         }
         if (answer.status == HittingSetMaster::Answer::FAILED) {
@@ -320,8 +310,21 @@ bool DesignLearner::prove_by_hitting_sets() {
             return false;
         }
         lower_bound_ = std::min(best, answer.bound);
+        // Its additions alone first: their floors bound every design within them
+        // (measured_floors.h), so the program may move on without evaluating this one.
+        Configuration additions = additions_of(answer.design, bound_.always());
+        if (!additions.empty() && additions != answer.design && !measured(additions) && !std::getenv("NO_X_FIRST"))
+            answer.design = std::move(additions);
+        if (std::getenv("TRACE_PHASE")) {
+            std::fprintf(stderr, "phase: bound %.4f best %.4f design", answer.bound, best);
+            for (int m : answer.design)
+                std::fprintf(stderr, " %s", problem_.modifications[m].name.c_str());
+            std::fprintf(stderr, "\n");
+        }
         if (!evaluate(answer.design))
             return false;
+        if (std::getenv("TRACE_PHASE"))
+            std::fprintf(stderr, "  best now %.4f\n", result_.best->objective.value);
         learn_explanation_plans(answer.design, known_.back().second);
         ++designs_;
         ++result_.counters.configurations_evaluated;
@@ -472,6 +475,7 @@ bool DesignLearner::evaluate(const Configuration &design, bool inherit) {
         tasks.push_back(records[t]->evaluation);
     }
     known_.emplace_back(design, std::move(records));
+    measure(design, known_.back().second, answer->robot_cost_bounds);
     if (report_)
         report_();
     if (static_cast<int>(design.size()) <= max_size_) {

@@ -9,6 +9,7 @@
 #include "design/search/design_result.h"
 #include "design/search/hitting_set.h"
 #include "design/search/witness.h"
+#include "design/search/witness_cones.h"
 #include "design/search/witness_bound.h"
 
 #include <functional>
@@ -17,18 +18,6 @@
 #include <vector>
 
 namespace envdesign::design::witness {
-
-// `design` and the supersets that provably rank after it (hitting_set.h), from the records
-// of its tasks.
-Cone cone_of(const DesignProblem &problem, const SupersetBound &bound, const Configuration &design,
-             const std::vector<Record> &records);
-
-// Offers `design` + E to `ranking` for every E in its cone (ranking.h's offer_cone): the
-// members' tasks are those of `design`, so no planning. Nothing when a record is missing
-// or a task's objective is infinite. `max_size`: the largest design (no 0).
-void offer_cone_of(const DesignProblem &problem, const SupersetBound &bound,
-                   const Configuration &design, const std::vector<Record> &records, int max_size,
-                   Ranking &ranking);
 
 // robot_behaviour EXPLAINING: whether the hitting-set phase applies (explanation_bound.h):
 // every modification restricts or adds plans and costs no less than nothing, and at most
@@ -73,6 +62,9 @@ private:
     std::optional<std::vector<double>> probe(const Configuration &design,
                                              const std::vector<int> &tasks);
     Record inherited(const Configuration &design, int task) const;
+    void measure(const Configuration &design, const std::vector<Record> &records,
+                 const std::vector<std::optional<double>> &robot_bounds);
+    bool measured(const Configuration &additions) const;
     void learn_explanation_plans(const Configuration &design, const std::vector<Record> &records);
     void note_explanation_plans();
 
@@ -90,6 +82,7 @@ private:
     std::vector<std::pair<Configuration, std::vector<Record>>>
         known_;                    // evaluated here or in the search
     std::vector<Cone> considered_; // every design whose objective is known, and its cone
+    std::vector<MeasuredFloor> measured_; // floors of evaluated designs with additions
     void consider(const Configuration &design, const std::vector<Record> &records);
     std::optional<ExplanationBound> explaining_; // EXPLAINING: built with the root facts
     double lower_bound_;
