@@ -8,8 +8,6 @@
 #include "search/state_space.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <chrono>
 #include <functional>
 #include <map>
@@ -176,7 +174,7 @@ public:
                                            double &proven) {
         for (int o : steps)
             task_.operators[o].add.push_back(used_); // the largest id: the list stays sorted
-        auto cost = least_cost(task_, deadline, std::getenv("FLOOR_CAP") ? std::atof(std::getenv("FLOOR_CAP")) : FLOOR_SEARCH_SECONDS, &proven);
+        auto cost = least_cost(task_, deadline, FLOOR_SEARCH_SECONDS, &proven);
         for (int o : steps)
             task_.operators[o].add.pop_back();
         return cost;
@@ -326,10 +324,6 @@ bool model_floors(const DesignProblem &problem, const std::vector<int> &adding,
             // A planner limit: what the search proved, or the floor of every plan.
             cost = found.value_or(std::max(*least, proven));
         }
-        if (std::getenv("TRACE_PHASE"))
-            std::fprintf(stderr, "floor %s least %.1f floor %.1f cost %.1f found %d\n",
-                         problem.modifications[e].name.c_str(), *least, floor, cost,
-                         steps ? 1 : 0);
         if (cost <= floor)
             below.push_back({e, cost});
     }

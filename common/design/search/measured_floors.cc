@@ -8,6 +8,9 @@
 
 namespace envdesign::design::witness {
 
+namespace {
+
+// The modifications of `design` that are in `adding` (both ascending).
 Configuration additions_of(const Configuration &design, const std::vector<int> &adding) {
     Configuration out;
     std::set_intersection(design.begin(), design.end(), adding.begin(), adding.end(),
@@ -15,24 +18,26 @@ Configuration additions_of(const Configuration &design, const std::vector<int> &
     return out;
 }
 
+} // namespace
+
 std::optional<MeasuredFloor>
 measured_floor(const Configuration &design, const std::vector<int> &adding,
                const std::vector<bool> &edits_robot,
                const std::vector<const TaskExplicability *> &tasks,
                const std::vector<std::optional<double>> &robot_bounds, bool human_floors) {
     MeasuredFloor floor;
-    floor.additions = additions_of(design, adding);
-    if (floor.additions.empty())
+    Configuration additions = additions_of(design, adding);
+    if (additions.empty())
         return std::nullopt;
     auto robot = [&](int m) { return m < static_cast<int>(edits_robot.size()) && edits_robot[m]; };
     for (int m : design)
-        if (!contains(floor.additions, m)) {
+        if (!contains(additions, m)) {
             floor.human_within.restricting.push_back(m);
             if (robot(m))
                 floor.robot_within.restricting.push_back(m);
         }
     for (int e : adding)
-        if (!contains(floor.additions, e)) {
+        if (!contains(additions, e)) {
             floor.human_within.outside.push_back(e);
             if (robot(e))
                 floor.robot_within.outside.push_back(e);

@@ -31,14 +31,10 @@ struct Within {
 };
 
 struct MeasuredFloor {
-    Configuration additions; // D's adding modifications
     Within human_within, robot_within;
     std::vector<std::optional<double>> human; // per task, c_H(pi_D); unset: not a floor here
     std::vector<std::optional<double>> robot; // per task, a lower bound on c_R*(D)
 };
-
-// The modifications of `design` that are in `adding` (both ascending).
-Configuration additions_of(const Configuration &design, const std::vector<int> &adding);
 
 // The floors of an evaluated design: `tasks` its evaluations (null: unknown), `robot_bounds`
 // the evaluator's lower bounds on c_R* (unset: unknown), `edits_robot` per modification.

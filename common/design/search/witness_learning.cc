@@ -6,8 +6,6 @@
 #include "design/search/hitting_set.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <iomanip>
 #include <iterator>
@@ -49,13 +47,6 @@ void DesignLearner::measure(const Configuration &design, const std::vector<Recor
                                 b.takes_most_explicable_plan && !b.may_explain);
     if (floor)
         measured_.push_back(std::move(*floor));
-}
-
-// Whether the design of `additions` alone has its floors measured.
-bool DesignLearner::measured(const Configuration &additions) const {
-    return std::any_of(measured_.begin(), measured_.end(), [&](const MeasuredFloor &f) {
-        return f.human_within.restricting.empty() && f.additions == additions;
-    });
 }
 
 // Meets each task's plans of the human's model that are cheaper than its most explicable
@@ -310,21 +301,8 @@ bool DesignLearner::prove_by_hitting_sets() {
             return false;
         }
         lower_bound_ = std::min(best, answer.bound);
-        // Its additions alone first: their floors bound every design within them
-        // (measured_floors.h), so the program may move on without evaluating this one.
-        Configuration additions = additions_of(answer.design, bound_.always());
-        if (!additions.empty() && additions != answer.design && !measured(additions) && !std::getenv("NO_X_FIRST"))
-            answer.design = std::move(additions);
-        if (std::getenv("TRACE_PHASE")) {
-            std::fprintf(stderr, "phase: bound %.4f best %.4f design", answer.bound, best);
-            for (int m : answer.design)
-                std::fprintf(stderr, " %s", problem_.modifications[m].name.c_str());
-            std::fprintf(stderr, "\n");
-        }
         if (!evaluate(answer.design))
             return false;
-        if (std::getenv("TRACE_PHASE"))
-            std::fprintf(stderr, "  best now %.4f\n", result_.best->objective.value);
         learn_explanation_plans(answer.design, known_.back().second);
         ++designs_;
         ++result_.counters.configurations_evaluated;

@@ -64,7 +64,6 @@ private:
     Record inherited(const Configuration &design, int task) const;
     void measure(const Configuration &design, const std::vector<Record> &records,
                  const std::vector<std::optional<double>> &robot_bounds);
-    bool measured(const Configuration &additions) const;
     void learn_explanation_plans(const Configuration &design, const std::vector<Record> &records);
     void note_explanation_plans();
 
