@@ -1467,8 +1467,8 @@ TEST(WitnessAgreement, MeasuredFloorsHoldInEveryDesignWithin) {
             std::vector<const TaskExplicability *> evaluations;
             for (const TaskExplicability &e : value[d])
                 evaluations.push_back(&e);
-            auto floor = measured_floor(design_of(d), adding, edits_robot, evaluations, robot[d],
-                                        true);
+            auto floor =
+                measured_floor(design_of(d), adding, edits_robot, evaluations, robot[d], true);
             if (!floor)
                 continue;
             for (unsigned s2 = 0; s2 < (1u << n); ++s2) {

@@ -224,11 +224,9 @@ double HittingSetMaster::add_fixed_floor(Program &program, const std::vector<Lev
 // bring it there, u_k <= u_(k-1), and, per measured design D whose floor is above F_k,
 // u_k <= (additions outside D's) + (D's restricting ones left out): a design within D keeps
 // D's floor (measured_floors.h). Each u_k costs -saving_weight (F_(k-1) - F_k).
-HittingSetMaster::FloorLevels
-HittingSetMaster::add_floor_levels(Program &program, int t, double top,
-                                   const std::vector<UseFloor> &lowering,
-                                   const std::vector<MeasuredFloor> &measured, bool robot,
-                                   double saving_weight) const {
+HittingSetMaster::FloorLevels HittingSetMaster::add_floor_levels(
+    Program &program, int t, double top, const std::vector<UseFloor> &lowering,
+    const std::vector<MeasuredFloor> &measured, bool robot, double saving_weight) const {
     auto floor_of = [&](const MeasuredFloor &d) -> const std::optional<double> & {
         return robot ? d.robot[t] : d.human[t];
     };
@@ -243,7 +241,8 @@ HittingSetMaster::add_floor_levels(Program &program, int t, double top,
     out.floors.erase(std::unique(out.floors.begin(), out.floors.end()), out.floors.end());
     for (std::size_t k = 1; k < out.floors.size(); ++k) {
         // No weight: no saving (a level of -INF, COST_OPTIMAL's floor dropped, gives 0 x INF).
-        double saving = saving_weight == 0 ? 0.0 : saving_weight * (out.floors[k - 1] - out.floors[k]);
+        double saving =
+            saving_weight == 0 ? 0.0 : saving_weight * (out.floors[k - 1] - out.floors[k]);
         int u = program.column(-saving);
         out.columns.push_back(u);
         std::vector<int> cols{u};

@@ -20,11 +20,12 @@ Configuration additions_of(const Configuration &design, const std::vector<int> &
 
 } // namespace
 
-std::optional<MeasuredFloor>
-measured_floor(const Configuration &design, const std::vector<int> &adding,
-               const std::vector<bool> &edits_robot,
-               const std::vector<const TaskExplicability *> &tasks,
-               const std::vector<std::optional<double>> &robot_bounds, bool human_floors) {
+std::optional<MeasuredFloor> measured_floor(const Configuration &design,
+                                            const std::vector<int> &adding,
+                                            const std::vector<bool> &edits_robot,
+                                            const std::vector<const TaskExplicability *> &tasks,
+                                            const std::vector<std::optional<double>> &robot_bounds,
+                                            bool human_floors) {
     MeasuredFloor floor;
     Configuration additions = additions_of(design, adding);
     if (additions.empty())

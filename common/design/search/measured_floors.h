@@ -41,10 +41,11 @@ struct MeasuredFloor {
 // `human_floors`: the behaviour takes the most explicable plan (EXPLICABLE), so c_H(pi) is
 // the least over P_mod's plans. Nullopt when the design has no adding modification (the
 // root's facts already hold there).
-std::optional<MeasuredFloor>
-measured_floor(const Configuration &design, const std::vector<int> &adding,
-               const std::vector<bool> &edits_robot,
-               const std::vector<const TaskExplicability *> &tasks,
-               const std::vector<std::optional<double>> &robot_bounds, bool human_floors);
+std::optional<MeasuredFloor> measured_floor(const Configuration &design,
+                                            const std::vector<int> &adding,
+                                            const std::vector<bool> &edits_robot,
+                                            const std::vector<const TaskExplicability *> &tasks,
+                                            const std::vector<std::optional<double>> &robot_bounds,
+                                            bool human_floors);
 
 } // namespace envdesign::design::witness

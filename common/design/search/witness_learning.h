@@ -9,8 +9,8 @@
 #include "design/search/design_result.h"
 #include "design/search/hitting_set.h"
 #include "design/search/witness.h"
-#include "design/search/witness_cones.h"
 #include "design/search/witness_bound.h"
+#include "design/search/witness_cones.h"
 
 #include <functional>
 #include <optional>
@@ -79,8 +79,8 @@ private:
     int max_size_;
     std::optional<Node> root_;
     std::vector<std::pair<Configuration, std::vector<Record>>>
-        known_;                    // evaluated here or in the search
-    std::vector<Cone> considered_; // every design whose objective is known, and its cone
+        known_;                           // evaluated here or in the search
+    std::vector<Cone> considered_;        // every design whose objective is known, and its cone
     std::vector<MeasuredFloor> measured_; // floors of evaluated designs with additions
     void consider(const Configuration &design, const std::vector<Record> &records);
     std::optional<ExplanationBound> explaining_; // EXPLAINING: built with the root facts
