@@ -6,6 +6,7 @@
 #include "design/evaluation/dispatcher.h"
 #include "design/reconciliation/explanation_floor.h"
 #include "design/search/witness.h"
+#include "validate/plan_validator.h"
 
 #include "concurrency/blocking_queue.h"
 
@@ -75,20 +76,57 @@ void LocalEvaluator::floors(const Configuration &configuration, int task, const 
         return;
     }
     ModelPair models = configured_models(problem_, configuration, task);
-    PlanOutcome human = solve_model(models.human_domain, models.human_problem, cache_, deadline);
+    PlanOutcome human =
+        human_optimal_plan(configuration, task, models, human_optimum[task], deadline);
     if (human.status != PlanStatus::SOLVED)
         return;
-    human_optimum.assign(problem_.tasks.size(), std::nullopt);
-    human_optimum[task] = static_cast<double>(human.cost);
-    {
-        std::lock_guard lock(human_optima_mutex_);
-        if (human_optima_.size() < kHumanOptimaKept) // a planner service keeps its evaluators
-            human_optima_.remember(configuration, human_optimum);
-    }
     answer.ie_floor = ie_floor(*robot_bound, static_cast<double>(human.cost), w.distance);
     // Above the least IE, the human's plan costs people less than pi_R (ie_floor's argument).
     if (behaviour_of(w.behaviour).may_explain && *answer.ie_floor > least_ie(w.distance))
         answer.explanation_floor = explanation_floor(models, human.plan, *robot_bound);
+}
+
+// c_H* of the task under `configuration`, with an optimal plan. `inherited` is the greatest
+// c_H* of its subsets one human-restricting modification smaller (it never drops): where one
+// of their optimal plans costing that much is valid here, it is optimal here too, and no A*
+// runs. Remembers what it found for the configurations one larger.
+PlanOutcome LocalEvaluator::human_optimal_plan(const Configuration &configuration, int task,
+                                               const ModelPair &models,
+                                               std::optional<double> inherited,
+                                               const Deadline &deadline) {
+    std::vector<KeptPlan> candidates;
+    if (inherited) {
+        std::lock_guard lock(human_optima_mutex_);
+        for (const Configuration &parent : human_optima_.parents(configuration)) {
+            auto it = human_plans_.find(parent);
+            if (it != human_plans_.end() && it->second[task])
+                candidates.push_back(it->second[task]);
+        }
+    }
+    PlanOutcome human;
+    for (const KeptPlan &plan : candidates) {
+        auto v = validate::validate_plan(models.human_domain, models.human_problem, *plan);
+        if (v.valid && static_cast<double>(v.cost) == *inherited) {
+            human = {PlanStatus::SOLVED, v.cost, 0, *plan};
+            break;
+        }
+    }
+    if (human.status != PlanStatus::SOLVED)
+        human = solve_model(models.human_domain, models.human_problem, cache_, deadline);
+    if (human.status != PlanStatus::SOLVED)
+        return human;
+    std::vector<std::optional<double>> optimum(problem_.tasks.size());
+    optimum[task] = static_cast<double>(human.cost);
+    std::lock_guard lock(human_optima_mutex_);
+    if (human_optima_.size() < kHumanOptimaKept) // a planner service keeps its evaluators
+        human_optima_.remember(configuration, optimum);
+    auto kept = human_plans_.find(configuration);
+    if (kept == human_plans_.end() && human_plans_.size() < kHumanPlansKept)
+        kept =
+            human_plans_.emplace(configuration, std::vector<KeptPlan>(problem_.tasks.size())).first;
+    if (kept != human_plans_.end() && !kept->second[task])
+        kept->second[task] = std::make_shared<const std::vector<std::string>>(human.plan);
+    return human;
 }
 
 JobAnswer LocalEvaluator::answer(const Configuration &configuration, const Job &job,

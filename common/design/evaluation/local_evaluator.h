@@ -14,7 +14,11 @@
 #include "design/evaluation/plan_cache.h"
 #include "design/search/rising_bounds.h"
 
+#include <map>
+#include <memory>
 #include <mutex>
+#include <string>
+#include <vector>
 
 namespace envdesign::design {
 
@@ -55,7 +59,15 @@ private:
     // robot bound the floor is the least IE without the human's A*.
     RisingBounds human_optima_;
     static constexpr std::size_t kHumanOptimaKept = 1 << 16; // configurations
+    // The optimal plans behind them, per task: one still valid one rising modification larger
+    // is optimal there too (it costs the bound), so that floor job needs no A*.
+    using KeptPlan = std::shared_ptr<const std::vector<std::string>>;
+    std::map<Configuration, std::vector<KeptPlan>> human_plans_;
+    static constexpr std::size_t kHumanPlansKept = 1 << 12; // configurations
     std::mutex human_optima_mutex_;
+    PlanOutcome human_optimal_plan(const Configuration &configuration, int task,
+                                   const ModelPair &models, std::optional<double> inherited,
+                                   const Deadline &deadline);
     long long task_evaluations_ = 0;
 };
 

@@ -17,14 +17,21 @@ void RisingBounds::remember(const Configuration &configuration,
             kept[t] = bounds[t];
 }
 
-void RisingBounds::inherit(const Configuration &configuration,
-                           std::vector<std::optional<double>> &bounds) const {
+std::vector<Configuration> RisingBounds::parents(const Configuration &configuration) const {
+    std::vector<Configuration> out;
     for (int m : configuration) {
         if (m < 0 || m >= static_cast<int>(rising_.size()) || !rising_[m])
             continue;
-        Configuration smaller;
+        Configuration &smaller = out.emplace_back();
         std::copy_if(configuration.begin(), configuration.end(), std::back_inserter(smaller),
                      [m](int k) { return k != m; });
+    }
+    return out;
+}
+
+void RisingBounds::inherit(const Configuration &configuration,
+                           std::vector<std::optional<double>> &bounds) const {
+    for (const Configuration &smaller : parents(configuration)) {
         auto it = known_.find(smaller);
         if (it == known_.end())
             continue;

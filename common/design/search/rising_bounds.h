@@ -32,6 +32,8 @@ public:
                  std::vector<std::optional<double>> &bounds) const;
     // Configurations with bounds kept.
     std::size_t size() const { return known_.size(); }
+    // The subsets of `configuration` one rising modification smaller.
+    std::vector<Configuration> parents(const Configuration &configuration) const;
 
 private:
     std::vector<bool> rising_;
