@@ -88,12 +88,7 @@ TEST(ExplanationFloor, EqualsEverySubsetAndNeverExceedsTheExplanation) {
 // is stopped by two: a precondition with its delete (a pick-up or unstack that empties the
 // hand), so the floor is 2, below the explanation's 4, and 0 when pi_R is no dearer.
 TEST(ExplanationFloor, PaperBlocksworldNeedsTheCoupledPair) {
-    const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/paper/blocksworld/";
-    ModelPair m;
-    m.robot_domain = pddl::parse_domain_file(dir + "domain-robot.pddl");
-    m.human_domain = pddl::parse_domain_file(dir + "domain-human.pddl");
-    m.robot_problem = pddl::parse_problem_file(dir + "20/init-7-1-goal-7-0.pddl", m.robot_domain);
-    m.human_problem = pddl::parse_problem_file(dir + "20/init-7-1-goal-7-0.pddl", m.human_domain);
+    ModelPair m = testing::paper_blocksworld("20/init-7-1-goal-7-0.pddl");
     PlanCache planner(planning::PlannerOptions{});
     PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
     PlanOutcome human = solve_model(m.human_domain, m.human_problem, planner, Deadline{});

@@ -5,6 +5,7 @@
 #include "design/behaviour/explicability.h"
 #include "design/model/compilation.h"
 #include "example_paths.h"
+#include "generated_models.h"
 #include "pddl/parser.h"
 #include "validate/plan_validator.h"
 
@@ -229,12 +230,7 @@ TEST(IeFloor, HumanCostsDominateOnlyWhereEveryActionCostsPeopleAtLeastTheRobots)
 // problem 02, the 4-block state of instance 1 with the goal of instance 2: c_R* 12, c_H* 6
 // (people think the robot carries towers whole), IE e^6.
 TEST(IeFloor, IsTheIeOfTheMostExplicablePlanOnThePapersBlocksworld) {
-    const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/paper/blocksworld/";
-    ModelPair m;
-    m.robot_domain = pddl::parse_domain_file(dir + "domain-robot.pddl");
-    m.human_domain = pddl::parse_domain_file(dir + "domain-human.pddl");
-    m.robot_problem = pddl::parse_problem_file(dir + "02/init-4-1-goal-4-2.pddl", m.robot_domain);
-    m.human_problem = m.robot_problem;
+    ModelPair m = testing::paper_blocksworld("02/init-4-1-goal-4-2.pddl");
     ASSERT_TRUE(
         human_costs_dominate(m.robot_domain, m.robot_problem, m.human_domain, m.human_problem));
     PlanCache planner(planning::PlannerOptions{});

@@ -8,9 +8,22 @@
 #include "pddl/sexpr.h"
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace envdesign::design::testing {
+
+// The paper's Blocksworld models for one problem file of tests/data/paper/blocksworld/
+// ("20/init-7-1-goal-7-0.pddl"), each side's problem parsed against its own domain.
+inline ModelPair paper_blocksworld(const std::string &problem) {
+    const std::string dir = std::string(ENVDESIGN_TEST_DATA) + "/paper/blocksworld/";
+    ModelPair m;
+    m.robot_domain = pddl::parse_domain_file(dir + "domain-robot.pddl");
+    m.human_domain = pddl::parse_domain_file(dir + "domain-human.pddl");
+    m.robot_problem = pddl::parse_problem_file(dir + problem, m.robot_domain);
+    m.human_problem = pddl::parse_problem_file(dir + problem, m.human_domain);
+    return m;
+}
 
 inline ModelPair models_of(const GeneratedPair &g) {
     ModelPair m;
