@@ -255,11 +255,12 @@ void flood_against_a_client(const fs::path &dir, const std::string &spec, bool k
     std::cout << "planner RSS at most " << most / 1024 << " MiB\n";
     if (logs)
         std::ofstream(logs) << cluster.logs();
-    // The restaurant's 0.04 s is within 2x only on a quiet machine: withdrawing the flood's
-    // searches takes their planners tens of milliseconds, and on a loaded one their bus
-    // threads hear of it late (docs/results/robustness.md); 0.5 s allows for that.
+    // Within 2x only on a quiet machine: withdrawing the flood's searches takes their planners
+    // tens of milliseconds, and on a loaded one their bus threads hear of it late
+    // (docs/results/robustness.md); 0.5 s allows for that, for both sizes (blocksworld once
+    // failed at 2.001x in CI). A starved request takes 10-80 s, or the 30 s timeout.
     EXPECT_LT(median(flooded_small), 2 * median(quiet_small) + 0.5) << cluster.logs();
-    EXPECT_LE(median(flooded_large), 2 * median(quiet_large)) << cluster.logs();
+    EXPECT_LT(median(flooded_large), 2 * median(quiet_large) + 0.5) << cluster.logs();
     EXPECT_LT(most, 128 * 1024) << "KiB: the planner's resident memory passed --job-memory-mb";
 }
 
