@@ -7,8 +7,19 @@
 namespace envdesign::search {
 namespace {
 
+// Whether every operator's secondary cost equals its primary cost. Then every plan's two
+// costs are equal, the plans of least primary cost are those of least secondary cost, and
+// the search orders by (f, h) alone: within the last f layer it goes deep instead of
+// expanding the layer by secondary g first.
+bool secondary_is_primary(const ground::GroundTask &task) {
+    return std::all_of(
+        task.operators.begin(), task.operators.end(),
+        [](const ground::GroundOperator &op) { return op.secondary_cost == op.cost; });
+}
+
 bool has_secondary_costs(const ground::GroundTask &task) {
-    return std::any_of(task.operators.begin(), task.operators.end(),
+    return !secondary_is_primary(task) &&
+           std::any_of(task.operators.begin(), task.operators.end(),
                        [](const ground::GroundOperator &op) { return op.secondary_cost != 0; });
 }
 
@@ -28,7 +39,8 @@ heuristics::StateView view_of(const UnpackedState &state) {
 AStarSearch::AStarSearch(const ground::GroundTask &task, heuristics::Heuristic &heuristic,
                          SearchLimits limits)
     : task_(task), heuristic_(heuristic), limits_(limits), start_(std::chrono::steady_clock::now()),
-      use_secondary_(has_secondary_costs(task)), registry_(task), successors_(task),
+      secondary_is_primary_(secondary_is_primary(task)), use_secondary_(has_secondary_costs(task)),
+      registry_(task), successors_(task),
       open_list_(make_open_list(use_secondary_, max_operator_cost(task))),
       current_(registry_.codec()), successor_(registry_.codec()) {
     result_.stats.bytes_per_state = registry_.bytes_per_state();
@@ -161,7 +173,7 @@ void AStarSearch::open(StateID id, const Node &node, long long secondary_g) {
 void AStarSearch::extract_plan(StateID goal) {
     const Node &goal_node = nodes_[goal];
     result_.cost = goal_node.g;
-    result_.secondary_cost = secondary_g(goal);
+    result_.secondary_cost = secondary_is_primary_ ? goal_node.g : secondary_g(goal);
     result_.plan.clear();
     for (StateID id = goal; nodes_[id].parent != NO_STATE; id = nodes_[id].parent)
         result_.plan.push_back(nodes_[id].op);

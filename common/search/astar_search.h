@@ -5,10 +5,12 @@
 // (lexicographic costs; the heuristic estimates the primary cost only, so h = (h, 0) stays
 // admissible). The open list orders by (f = g + h, secondary g, h) ascending, FIFO among
 // equal keys, which is Fast Downward's astar tie-breaking [sum(g, h), h] when secondary
-// costs are all 0. States are evaluated when generated, dead ends (h = DEAD_END) are
-// pruned, and closed states are reopened when reached more cheaply (LM-cut is admissible
-// but not consistent). A state counts as expanded when it is taken from the open list and
-// not already closed, the goal state included (as in FD, whose counts we match).
+// costs are all 0. Where every operator's secondary cost equals its primary cost, each plan's
+// two costs are equal and the secondary is not searched: the order is (f, h). States are
+// evaluated when generated, dead ends (h = DEAD_END) are pruned, and closed states are
+// reopened when reached more cheaply (LM-cut is admissible but not consistent). A state
+// counts as expanded when it is taken from the open list and not already closed, the goal
+// state included (as in FD, whose counts we match).
 //
 // Example:
 //   auto h = heuristics::make_heuristic(heuristics::HeuristicKind::LMCUT, task);
@@ -117,6 +119,7 @@ private:
     heuristics::Heuristic &heuristic_;
     SearchLimits limits_;
     std::chrono::steady_clock::time_point start_;
+    bool secondary_is_primary_ = false; // every operator's two costs are equal
     bool use_secondary_ = false;
     bool initialized_ = false;
     StateRegistry registry_;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 namespace envdesign::design {
 namespace {
@@ -134,6 +135,40 @@ TEST(Explicability, RestaurantAgainstBruteForce) {
         EXPECT_EQ(e.robot_cost, expected.robot_cost) << task;
         EXPECT_EQ(e.human_optimal_cost, expected.human_optimal_cost) << task;
     }
+}
+
+// Seeded pairs of every kind of model difference (explaining_generator.h): the evaluation
+// agrees with the enumeration of every sequence, whether the human's optimal plan answered
+// P_mod (it is valid there and both models charge alike: one search, P_H's) or P_mod was
+// searched. Both ways must occur.
+TEST(Explicability, GeneratedPairsAgainstBruteForceWithAndWithoutTheHumansPlan) {
+    int answered_by_human_plan = 0, searched = 0;
+    for (unsigned seed = 0; seed < 60; ++seed) {
+        ModelPair m = testing::models_of(testing::generate_pair(seed));
+        PlanCache planner(planning::PlannerOptions{});
+        TaskExplicability e =
+            evaluate_explicability(m, Distance::COST_DIFF, planner, Deadline{}, true);
+        // Every step costs people at least 1, so no plan cheaper for them is longer.
+        int steps = std::isfinite(e.human_plan_cost) ? static_cast<int>(e.human_plan_cost) : 6;
+        testing::BruteForce expected = testing::brute_force_explicability(m, steps);
+        EXPECT_EQ(e.human_optimal_cost, expected.human_optimal_cost) << "seed " << seed;
+        if (e.status != ExplicabilityStatus::SOLVED) {
+            EXPECT_TRUE(std::isinf(expected.human_plan_cost)) << "seed " << seed;
+            continue;
+        }
+        EXPECT_EQ(e.human_plan_cost, expected.human_plan_cost) << "seed " << seed;
+        EXPECT_EQ(e.robot_cost, expected.robot_cost) << "seed " << seed;
+        auto robot = validate::validate_plan(m.robot_domain, m.robot_problem, e.plan);
+        auto human = validate::validate_plan(m.human_domain, m.human_problem, e.plan);
+        EXPECT_TRUE(robot.valid && human.valid) << "seed " << seed;
+        EXPECT_EQ(robot.cost, e.robot_cost) << "seed " << seed;
+        EXPECT_EQ(human.cost, e.human_plan_cost) << "seed " << seed;
+        (planner.counters().planner_runs == 1 ? answered_by_human_plan : searched) += 1;
+    }
+    std::cout << answered_by_human_plan << " answered by the human's plan, " << searched
+              << " searched\n";
+    EXPECT_GT(answered_by_human_plan, 5);
+    EXPECT_GT(searched, 5);
 }
 
 TEST(Compilation, RenamesFluentsAndKeepsBothModelsConditions) {

@@ -154,6 +154,27 @@ TEST(AStarSearch, ReopensClosedStatesForInconsistentHeuristics) {
     EXPECT_EQ(result.stats.expanded, 5); // s, c, a, c again, g
 }
 
+// Where every operator's secondary cost equals its primary cost (P_mod when both models
+// charge alike) each plan's two costs are equal, and the search orders by (f, h) alone: it
+// follows the deep path within the last f layer (0, 1, 2, goal) instead of expanding that
+// layer by secondary g (0, 1, 4, 2, 5, goal), and still reports the secondary cost.
+TEST(AStarSearch, SecondaryCostsEqualToPrimaryAreNotSearched) {
+    // 0 -> 1 -> 2 -> 3 and 0 -> 4 -> 5 -> 3, each step costing (1, 1); h is exact.
+    ground::GroundTask task = graph_task(
+        6, {{0, 1, 1, 1}, {1, 2, 1, 1}, {2, 3, 1, 1}, {0, 4, 1, 1}, {4, 5, 1, 1}, {5, 3, 1, 1}}, 0,
+        3);
+    TableHeuristic h({{0, 3}, {1, 2}, {2, 1}, {3, 0}, {4, 2}, {5, 1}});
+    AStarSearch search(task, h);
+    while (search.step() == SearchStatus::IN_PROGRESS) {
+    }
+    SearchResult result = search.result();
+    ASSERT_EQ(result.status, SearchStatus::SOLVED);
+    EXPECT_EQ(result.cost, 3);
+    EXPECT_EQ(result.secondary_cost, 3);
+    EXPECT_EQ(result.plan, (std::vector<ground::OperatorId>{0, 1, 2}));
+    EXPECT_EQ(result.stats.expanded, 4);
+}
+
 // Each step expands one state; the initial evaluation is a step of its own.
 TEST(AStarSearch, StepwiseCounts) {
     ground::GroundTask task = graph_task(3, {{0, 1, 1}, {1, 2, 1}}, 0, 2);

@@ -3,6 +3,7 @@
 #include "design/model/compilation.h"
 #include "design/model/lifted_key.h"
 #include "ground/grounder.h"
+#include "validate/plan_validator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,16 +26,35 @@ bool solve_human(const ModelPair &models, PlanCache &planner, const Deadline &de
     return human.status != PlanStatus::LIMIT;
 }
 
+// An optimal plan of P_mod argued from the human's optimal plan, without its search: every
+// plan of P_mod is one of P_H and costs people at least c_H*, so the human's plan is most
+// explicable where it is valid in P_mod, and the robot's cheapest among those where both
+// models charge every action alike (costs_agree). The human's plan comes from its own
+// search, so the answer (and the plan reported) does not depend on what was solved before.
+std::optional<PlanOutcome> known_most_explicable(const ModelPair &models,
+                                                 const CompiledTask &compiled,
+                                                 const TaskExplicability &human) {
+    if (!human.human_optimal_cost || std::isinf(*human.human_optimal_cost) || !human.human_plan ||
+        !costs_agree(models))
+        return std::nullopt;
+    const auto optimum = static_cast<long long>(*human.human_optimal_cost);
+    auto v = validate::validate_plan(compiled.domain, compiled.problem, *human.human_plan);
+    if (!v.valid || v.cost != optimum)
+        return std::nullopt;
+    return PlanOutcome{PlanStatus::SOLVED, optimum, optimum, *human.human_plan};
+}
+
 } // namespace
 
 PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
-                        PlanCache &planner, const Deadline &deadline) {
+                        PlanCache &planner, const Deadline &deadline,
+                        const PlanCache::KnownAnswer &known) {
     return planner.solve_model(
         lifted_key(domain, problem),
         [&] {
             return ground::ground(domain, problem, nullptr, [&] { return deadline.expired(); });
         },
-        deadline);
+        deadline, known);
 }
 
 double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
@@ -63,19 +83,25 @@ bool ie_floors_hold(const DesignProblem &problem) {
 TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
                                          PlanCache &planner, const Deadline &deadline,
                                          bool solve_human_anyway) {
+    // P_H first: its optimal plan often answers P_mod too (known_most_explicable).
     TaskExplicability result;
-    CompiledTask compiled = compile_explicable(models);
-    PlanOutcome explicable = solve_model(compiled.domain, compiled.problem, planner, deadline);
-    if (explicable.status == PlanStatus::LIMIT)
-        return result;
-    if (explicable.status == PlanStatus::UNSOLVABLE) {
-        result.status = ExplicabilityStatus::INEXPLICABLE;
-        if (solve_human_anyway)
-            solve_human(models, planner, deadline, result);
-        return result;
-    }
     if (!solve_human(models, planner, deadline, result))
         return TaskExplicability{};
+    CompiledTask compiled = compile_explicable(models);
+    PlanOutcome explicable = solve_model(compiled.domain, compiled.problem, planner, deadline, [&] {
+        return known_most_explicable(models, compiled, result);
+    });
+    if (explicable.status == PlanStatus::LIMIT)
+        return TaskExplicability{};
+    if (explicable.status == PlanStatus::UNSOLVABLE) {
+        TaskExplicability inexplicable;
+        inexplicable.status = ExplicabilityStatus::INEXPLICABLE;
+        if (solve_human_anyway) {
+            inexplicable.human_optimal_cost = result.human_optimal_cost;
+            inexplicable.human_plan = std::move(result.human_plan);
+        }
+        return inexplicable;
+    }
     result.human_plan_cost = as_cost(explicable.cost);
     result.robot_cost = as_cost(explicable.secondary_cost);
     result.plan = std::move(explicable.plan);

@@ -21,6 +21,7 @@
 #include <future>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,10 +52,12 @@ public:
     PlanOutcome solve(const ground::GroundTask &task, const Deadline &deadline);
 
     // The answer for a lifted model whose content address is `lifted`; calls `ground` and
-    // solve() only when no model with that address was seen.
+    // solve() only when no model with that address was seen and `known` (if given) has no
+    // answer: an optimal plan argued without a search (explicability.cc).
+    using KnownAnswer = std::function<std::optional<PlanOutcome>()>;
     PlanOutcome solve_model(const TaskKey &lifted,
                             const std::function<ground::GroundTask()> &ground,
-                            const Deadline &deadline);
+                            const Deadline &deadline, const KnownAnswer &known = {});
 
     CacheCounters counters() const;
     const planning::PlannerOptions &options() const { return options_; }

@@ -179,10 +179,11 @@ std::pair<int, std::vector<pddl::Atom>> split_cost(const std::vector<pddl::CostE
     return out;
 }
 
-} // namespace
-
-bool human_costs_dominate(const pddl::Domain &robot_domain, const pddl::Problem &robot_problem,
-                          const pddl::Domain &human_domain, const pddl::Problem &human_problem) {
+// Whether every action both models have costs people at least what it costs the robot
+// (`exactly`: just what it costs the robot), in every instance.
+bool human_costs_relate(const pddl::Domain &robot_domain, const pddl::Problem &robot_problem,
+                        const pddl::Domain &human_domain, const pddl::Problem &human_problem,
+                        bool exactly) {
     for (const auto &robot : robot_domain.actions) {
         const pddl::Action *human = human_domain.find_action(robot.name);
         if (!human || human->parameters.size() != robot.parameters.size())
@@ -194,13 +195,25 @@ bool human_costs_dominate(const pddl::Domain &robot_domain, const pddl::Problem 
             split_cost(model_cost(robot, robot_problem.minimize_total_cost, "", {}));
         auto [human_constant, human_terms] =
             split_cost(model_cost(*human, human_problem.minimize_total_cost, "", vars));
-        if (human_constant < robot_constant || human_terms != robot_terms)
+        if (human_constant < robot_constant || human_terms != robot_terms ||
+            (exactly && human_constant != robot_constant))
             return false;
         // The same terms cost the same only where both problems give them the same values.
         if (!robot_terms.empty() && robot_problem.function_values != human_problem.function_values)
             return false;
     }
     return true;
+}
+} // namespace
+
+bool human_costs_dominate(const pddl::Domain &robot_domain, const pddl::Problem &robot_problem,
+                          const pddl::Domain &human_domain, const pddl::Problem &human_problem) {
+    return human_costs_relate(robot_domain, robot_problem, human_domain, human_problem, false);
+}
+
+bool costs_agree(const ModelPair &models) {
+    return human_costs_relate(models.robot_domain, models.robot_problem, models.human_domain,
+                              models.human_problem, true);
 }
 
 std::string robot_copy(const std::string &name) { return "r-" + name; }

@@ -35,6 +35,10 @@ CompiledTask compile_explicable(const ModelPair &models);
 bool human_costs_dominate(const pddl::Domain &robot_domain, const pddl::Problem &robot_problem,
                           const pddl::Domain &human_domain, const pddl::Problem &human_problem);
 
+// Whether every action both models have costs people exactly what it costs the robot, in
+// every instance: then every plan of P_mod costs both the same.
+bool costs_agree(const ModelPair &models);
+
 std::string robot_copy(const std::string &name);
 std::string human_copy(const std::string &name);
 
