@@ -139,7 +139,8 @@ void AStarSearch::generate(StateID parent_id, ground::OperatorId op) {
     // Copy the parent: nodes_[succ.id] may grow the storage and move it.
     const Node parent = nodes_[parent_id];
     Node candidate{parent.g + o.cost, 0, parent_id, op};
-    long long candidate_secondary = secondary_g(parent_id) + o.secondary_cost;
+    // 0 where the secondary is not searched (costs equal to the primary's are not keys).
+    long long candidate_secondary = use_secondary_ ? secondary_g(parent_id) + o.secondary_cost : 0;
     if (status == NodeStatus::NEW) {
         registry_.unpack(succ.id, successor_);
         int h = heuristic_.compute(view_of(successor_));

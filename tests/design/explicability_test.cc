@@ -171,6 +171,37 @@ TEST(Explicability, GeneratedPairsAgainstBruteForceWithAndWithoutTheHumansPlan) 
     EXPECT_GT(searched, 5);
 }
 
+// A tool people do not know of (t2 is in the robot's problem only): P_mod may use it, so its
+// plans need not be plans of P_H, and the human's optimal plan (fix t1, use t1: 6) is not most
+// explicable although it is valid in P_mod. The most explicable plan is (use t2): 1.
+TEST(Explicability, AnObjectOnlyTheRobotKnowsKeepsTheSearchOfPmod) {
+    const std::string domain = R"((define (domain tools)
+  (:requirements :strips :typing :negative-preconditions :action-costs)
+  (:types tool)
+  (:predicates (broken ?t - tool) (done))
+  (:functions (total-cost) - number)
+  (:action use :parameters (?t - tool) :precondition (not (broken ?t))
+    :effect (and (done) (increase (total-cost) 1)))
+  (:action fix :parameters (?t - tool) :precondition (broken ?t)
+    :effect (and (not (broken ?t)) (increase (total-cost) 5)))))";
+    auto problem = [](const std::string &objects) {
+        return "(define (problem p) (:domain tools) (:objects " + objects +
+               " - tool) (:init (broken t1) (= (total-cost) 0)) (:goal (done))"
+               " (:metric minimize (total-cost)))";
+    };
+    ModelPair m;
+    m.robot_domain = pddl::parse_domain_text(domain, "domain.pddl");
+    m.human_domain = m.robot_domain;
+    m.robot_problem = pddl::parse_problem_text(problem("t1 t2"), "robot.pddl", m.robot_domain);
+    m.human_problem = pddl::parse_problem_text(problem("t1"), "human.pddl", m.human_domain);
+    TaskExplicability e = evaluate(m, Distance::COST_DIFF);
+    ASSERT_EQ(e.status, ExplicabilityStatus::SOLVED);
+    EXPECT_EQ(e.human_optimal_cost, 6);
+    EXPECT_EQ(e.plan, (std::vector<std::string>{"(use t2)"}));
+    EXPECT_EQ(e.human_plan_cost, 1);
+    EXPECT_DOUBLE_EQ(e.ie, 5.0);
+}
+
 TEST(Compilation, RenamesFluentsAndKeepsBothModelsConditions) {
     ModelPair m = load(ROADS, "domain.pddl", "robot.pddl", "human.pddl");
     CompiledTask c = compile_explicable(m);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace envdesign::design {
 namespace {
@@ -26,16 +27,32 @@ bool solve_human(const ModelPair &models, PlanCache &planner, const Deadline &de
     return human.status != PlanStatus::LIMIT;
 }
 
-// An optimal plan of P_mod argued from the human's optimal plan, without its search: every
-// plan of P_mod is one of P_H and costs people at least c_H*, so the human's plan is most
-// explicable where it is valid in P_mod, and the robot's cheapest among those where both
-// models charge every action alike (costs_agree). The human's plan comes from its own
-// search, so the answer (and the plan reported) does not depend on what was solved before.
+// Whether every object and constant of P_mod is one of P_H: otherwise a plan of P_mod may
+// use an object people do not know of, and need not be a plan of P_H.
+bool objects_known_to_people(const ModelPair &models) {
+    std::set<std::string> human;
+    for (const auto &o : models.human_problem.objects)
+        human.insert(o.name);
+    for (const auto &c : models.human_domain.constants)
+        human.insert(c.name);
+    auto known = [&](const std::vector<pddl::TypedName> &names) {
+        return std::all_of(names.begin(), names.end(),
+                           [&](const pddl::TypedName &n) { return human.count(n.name) > 0; });
+    };
+    return known(models.robot_problem.objects) && known(models.robot_domain.constants);
+}
+
+// An optimal plan of P_mod argued from the human's optimal plan, without its search. Where
+// P_mod's objects are all people's, every plan of P_mod is one of P_H and costs people at
+// least c_H*, so the human's plan is most explicable where it is valid in P_mod; it is the
+// robot's cheapest among those where both models charge every action alike (costs_agree).
+// Not memoized under P_mod's key: pairs whose P_H differ may share P_mod, and each must get
+// the same plan whatever was evaluated before.
 std::optional<PlanOutcome> known_most_explicable(const ModelPair &models,
                                                  const CompiledTask &compiled,
                                                  const TaskExplicability &human) {
     if (!human.human_optimal_cost || std::isinf(*human.human_optimal_cost) || !human.human_plan ||
-        !costs_agree(models))
+        !costs_agree(models) || !objects_known_to_people(models))
         return std::nullopt;
     const auto optimum = static_cast<long long>(*human.human_optimal_cost);
     auto v = validate::validate_plan(compiled.domain, compiled.problem, *human.human_plan);
@@ -47,14 +64,13 @@ std::optional<PlanOutcome> known_most_explicable(const ModelPair &models,
 } // namespace
 
 PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
-                        PlanCache &planner, const Deadline &deadline,
-                        const PlanCache::KnownAnswer &known) {
+                        PlanCache &planner, const Deadline &deadline) {
     return planner.solve_model(
         lifted_key(domain, problem),
         [&] {
             return ground::ground(domain, problem, nullptr, [&] { return deadline.expired(); });
         },
-        deadline, known);
+        deadline);
 }
 
 double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }
@@ -83,14 +99,16 @@ bool ie_floors_hold(const DesignProblem &problem) {
 TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
                                          PlanCache &planner, const Deadline &deadline,
                                          bool solve_human_anyway) {
-    // P_H first: its optimal plan often answers P_mod too (known_most_explicable).
+    // P_H first: its optimal plan often answers P_mod too (known_most_explicable). Out of
+    // time there, P_mod is still solved: an inexplicable task needs no c_H*.
     TaskExplicability result;
-    if (!solve_human(models, planner, deadline, result))
-        return TaskExplicability{};
+    const bool human_solved = solve_human(models, planner, deadline, result);
     CompiledTask compiled = compile_explicable(models);
-    PlanOutcome explicable = solve_model(compiled.domain, compiled.problem, planner, deadline, [&] {
-        return known_most_explicable(models, compiled, result);
-    });
+    std::optional<PlanOutcome> known;
+    if (human_solved)
+        known = known_most_explicable(models, compiled, result);
+    PlanOutcome explicable =
+        known ? *known : solve_model(compiled.domain, compiled.problem, planner, deadline);
     if (explicable.status == PlanStatus::LIMIT)
         return TaskExplicability{};
     if (explicable.status == PlanStatus::UNSOLVABLE) {
@@ -102,6 +120,8 @@ TaskExplicability evaluate_explicability(const ModelPair &models, Distance dista
         }
         return inexplicable;
     }
+    if (!human_solved)
+        return TaskExplicability{};
     result.human_plan_cost = as_cost(explicable.cost);
     result.robot_cost = as_cost(explicable.secondary_cost);
     result.plan = std::move(explicable.plan);

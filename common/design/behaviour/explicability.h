@@ -4,7 +4,9 @@
 //          those the cheapest for the robot;
 //   c_H* = the optimal cost of P_H;
 //   IE   = exp(|c_H(pi) - c_H*|) (EXP_COST_DIFF) or |c_H(pi) - c_H*| (COST_DIFF);
-//          infinite when P_mod has no plan (then P_H is not solved: IE is known).
+//          infinite when P_mod has no plan.
+// P_H is solved first: where its optimal plan is valid in P_mod, both models charge alike and
+// P_mod knows no object people do not, that plan is most explicable and P_mod is not searched.
 //
 // Example:
 //   PlanCache planner(planning::PlannerOptions{});
@@ -19,10 +21,9 @@
 namespace envdesign::design {
 
 // The planner's answer for one lifted model: skips grounding when the model was seen
-// (PlanCache::solve_model with lifted_key.h), and the search when `known` answers.
+// (PlanCache::solve_model with lifted_key.h).
 PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
-                        PlanCache &planner, const Deadline &deadline,
-                        const PlanCache::KnownAnswer &known = {});
+                        PlanCache &planner, const Deadline &deadline);
 
 // IE from the two human costs.
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance);
@@ -43,7 +44,7 @@ double ie_floor(double robot_optimal_cost, double human_optimal_cost, Distance d
 bool ie_floors_hold(const DesignProblem &problem);
 
 // Compiles and grounds P_mod and P_H of `models` and plans both through `planner`.
-// `solve_human_anyway`: also solve P_H when P_mod has no plan (for reporting c_H*).
+// `solve_human_anyway`: report c_H* when P_mod has no plan too.
 // Throws pddl::ParseError if the models cannot be compiled or grounded.
 TaskExplicability evaluate_explicability(const ModelPair &models, Distance distance,
                                          PlanCache &planner, const Deadline &deadline,

@@ -15,11 +15,8 @@ PlanOutcome PlanCache::solve(const ground::GroundTask &task, const Deadline &dea
 
 PlanOutcome PlanCache::solve_model(const TaskKey &lifted,
                                    const std::function<ground::GroundTask()> &ground,
-                                   const Deadline &deadline, const KnownAnswer &known) {
+                                   const Deadline &deadline) {
     return memoized(model_answers_, lifted, true, [&] {
-        if (known)
-            if (std::optional<PlanOutcome> answer = known())
-                return *answer;
         try {
             return solve(ground(), deadline);
         } catch (const ground::GroundingStopped &) {

@@ -21,7 +21,6 @@
 #include <future>
 #include <map>
 #include <mutex>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,12 +51,10 @@ public:
     PlanOutcome solve(const ground::GroundTask &task, const Deadline &deadline);
 
     // The answer for a lifted model whose content address is `lifted`; calls `ground` and
-    // solve() only when no model with that address was seen and `known` (if given) has no
-    // answer: an optimal plan argued without a search (explicability.cc).
-    using KnownAnswer = std::function<std::optional<PlanOutcome>()>;
+    // solve() only when no model with that address was seen.
     PlanOutcome solve_model(const TaskKey &lifted,
                             const std::function<ground::GroundTask()> &ground,
-                            const Deadline &deadline, const KnownAnswer &known = {});
+                            const Deadline &deadline);
 
     CacheCounters counters() const;
     const planning::PlannerOptions &options() const { return options_; }
