@@ -18,8 +18,7 @@ bool secondary_is_primary(const ground::GroundTask &task) {
 }
 
 bool has_secondary_costs(const ground::GroundTask &task) {
-    return !secondary_is_primary(task) &&
-           std::any_of(task.operators.begin(), task.operators.end(),
+    return std::any_of(task.operators.begin(), task.operators.end(),
                        [](const ground::GroundOperator &op) { return op.secondary_cost != 0; });
 }
 
@@ -39,9 +38,9 @@ heuristics::StateView view_of(const UnpackedState &state) {
 AStarSearch::AStarSearch(const ground::GroundTask &task, heuristics::Heuristic &heuristic,
                          SearchLimits limits)
     : task_(task), heuristic_(heuristic), limits_(limits), start_(std::chrono::steady_clock::now()),
-      secondary_is_primary_(secondary_is_primary(task)), use_secondary_(has_secondary_costs(task)),
-      registry_(task), successors_(task),
-      open_list_(make_open_list(use_secondary_, max_operator_cost(task))),
+      secondary_is_primary_(secondary_is_primary(task)),
+      use_secondary_(!secondary_is_primary_ && has_secondary_costs(task)), registry_(task),
+      successors_(task), open_list_(make_open_list(use_secondary_, max_operator_cost(task))),
       current_(registry_.codec()), successor_(registry_.codec()) {
     result_.stats.bytes_per_state = registry_.bytes_per_state();
 }

@@ -204,6 +204,7 @@ bool human_costs_relate(const pddl::Domain &robot_domain, const pddl::Problem &r
     }
     return true;
 }
+
 } // namespace
 
 bool human_costs_dominate(const pddl::Domain &robot_domain, const pddl::Problem &robot_problem,
