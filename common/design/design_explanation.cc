@@ -1,6 +1,7 @@
 #include "design/design_explanation.h"
 
 #include "design/behaviour/behaviour.h"
+#include "design/behaviour/explaining.h"
 #include "design/behaviour/explicability.h"
 
 #include <algorithm>
@@ -50,7 +51,8 @@ evaluate_missing(EvaluationLog &log, const std::vector<Configuration> &wanted, b
 void add_plans(const DesignProblem &problem, const Configuration &chosen, int task,
                PlanCache &planner, const Deadline &deadline, TaskComparison &out) {
     ModelPair models = configured_models(problem, chosen, task);
-    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline);
+    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline,
+                                    robot_plan_choice(behaviour_of(problem.weights.behaviour)));
     if (robot.status == PlanStatus::SOLVED) {
         out.robot_plan = robot.plan;
         out.robot_optimal_cost = static_cast<double>(robot.cost);

@@ -7,12 +7,11 @@
 #include <stdexcept>
 
 namespace envdesign::heuristics {
-namespace {
 
 // Every operator needs at most one fact and the goal is one fact: the delete relaxation is
 // a shortest-path problem (a robot on a route graph), where h^max is h+ and LM-cut, lying
 // between them, equals both at every state. h^max costs a fraction per state.
-bool unary_with_one_goal(const ground::GroundTask &task) {
+bool lmcut_is_hmax(const ground::GroundTask &task) {
     if (task.goal.size() != 1)
         return false;
     for (const auto &op : task.operators)
@@ -21,8 +20,6 @@ bool unary_with_one_goal(const ground::GroundTask &task) {
     return true;
 }
 
-} // namespace
-
 std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const ground::GroundTask &task) {
     switch (kind) {
     case HeuristicKind::BLIND:
@@ -30,7 +27,7 @@ std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const ground::Grou
     case HeuristicKind::HMAX:
         return std::make_unique<HMaxHeuristic>(task);
     case HeuristicKind::LMCUT:
-        if (unary_with_one_goal(task)) // the same estimates, so the same search and plan
+        if (lmcut_is_hmax(task)) // the same estimates, so the same search and plan
             return std::make_unique<HMaxHeuristic>(task);
         return std::make_unique<LmCutHeuristic>(task);
     }

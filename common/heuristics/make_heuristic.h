@@ -15,4 +15,7 @@ namespace envdesign::heuristics {
 // is computed as h^max: there the two give the same estimate at every state, h^max cheaper.
 std::unique_ptr<Heuristic> make_heuristic(HeuristicKind kind, const ground::GroundTask &task);
 
+// Whether LMCUT is computed as h^max on `task` (above).
+bool lmcut_is_hmax(const ground::GroundTask &task);
+
 } // namespace envdesign::heuristics

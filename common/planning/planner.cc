@@ -17,7 +17,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 PlanReport plan_task(const ground::GroundTask &task, const PlannerOptions &options) {
     auto start = std::chrono::steady_clock::now();
-    search::SearchResult result = search::astar(task, options.heuristic, options.limits);
+    search::SearchResult result =
+        search::astar(task, options.heuristic, options.limits, options.inherit_cuts);
     PlanReport report;
     report.status = result.status;
     for (ground::OperatorId op : result.plan)

@@ -14,6 +14,9 @@ namespace envdesign::planning {
 struct PlannerOptions {
     heuristics::HeuristicKind heuristic = heuristics::HeuristicKind::LMCUT;
     search::SearchLimits limits;
+    // LM-cut's estimates inherited from the parent (search/inherited_lmcut.h): the same
+    // optimal cost for a fraction of the time, but possibly another optimal plan.
+    bool inherit_cuts = false;
 };
 
 struct PlanReport {

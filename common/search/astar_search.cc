@@ -1,5 +1,6 @@
 #include "search/astar_search.h"
 #include "heuristics/make_heuristic.h"
+#include "search/inherited_lmcut.h"
 
 #include <algorithm>
 #include <utility>
@@ -29,15 +30,21 @@ int max_operator_cost(const ground::GroundTask &task) {
     return result;
 }
 
-heuristics::StateView view_of(const UnpackedState &state) {
-    return heuristics::StateView(state.facts, state.bits);
-}
-
 } // namespace
 
 AStarSearch::AStarSearch(const ground::GroundTask &task, heuristics::Heuristic &heuristic,
                          SearchLimits limits)
-    : task_(task), heuristic_(heuristic), limits_(limits), start_(std::chrono::steady_clock::now()),
+    : AStarSearch(task, std::make_unique<HeuristicEstimates>(heuristic), limits) {}
+
+AStarSearch::AStarSearch(const ground::GroundTask &task, std::unique_ptr<StateEstimates> own,
+                         SearchLimits limits)
+    : AStarSearch(task, *own, limits) {
+    own_estimates_ = std::move(own);
+}
+
+AStarSearch::AStarSearch(const ground::GroundTask &task, StateEstimates &estimates,
+                         SearchLimits limits)
+    : task_(task), estimates_(estimates), limits_(limits), start_(std::chrono::steady_clock::now()),
       secondary_is_primary_(secondary_is_primary(task)),
       use_secondary_(!secondary_is_primary_ && has_secondary_costs(task)), registry_(task),
       successors_(task), open_list_(make_open_list(use_secondary_, max_operator_cost(task))),
@@ -80,7 +87,7 @@ SearchStatus AStarSearch::initialize() {
     initialized_ = true;
     StateID id = registry_.insert_facts(task_.initial_state).id;
     registry_.unpack(id, current_);
-    int h = heuristic_.compute(view_of(current_));
+    int h = estimates_.initial(id, current_);
     ++result_.stats.evaluated;
     result_.stats.initial_h = h;
     if (h != heuristics::DEAD_END)
@@ -126,6 +133,7 @@ void AStarSearch::expand(StateID id) {
     successors_.applicable_operators(current_, applicable_);
     for (ground::OperatorId op : applicable_)
         generate(id, op);
+    estimates_.expanded(id);
 }
 
 void AStarSearch::generate(StateID parent_id, ground::OperatorId op) {
@@ -142,7 +150,7 @@ void AStarSearch::generate(StateID parent_id, ground::OperatorId op) {
     long long candidate_secondary = use_secondary_ ? secondary_g(parent_id) + o.secondary_cost : 0;
     if (status == NodeStatus::NEW) {
         registry_.unpack(succ.id, successor_);
-        int h = heuristic_.compute(view_of(successor_));
+        int h = estimates_.successor(succ.id, successor_, parent_id, op);
         ++result_.stats.evaluated;
         if (h == heuristics::DEAD_END) {
             status = NodeStatus::DEAD_END;
@@ -182,7 +190,7 @@ void AStarSearch::extract_plan(StateID goal) {
 
 std::size_t AStarSearch::memory_bytes() const {
     return registry_.memory_bytes() + nodes_.memory_bytes() + statuses_.memory_bytes() +
-           secondary_g_.memory_bytes() + open_list_->memory_bytes();
+           secondary_g_.memory_bytes() + open_list_->memory_bytes() + estimates_.memory_bytes();
 }
 
 SearchResult AStarSearch::result() const {
@@ -195,9 +203,15 @@ SearchResult AStarSearch::result() const {
 }
 
 SearchResult astar(const ground::GroundTask &task, heuristics::HeuristicKind kind,
-                   const SearchLimits &limits) {
+                   const SearchLimits &limits, bool inherit_cuts) {
     std::unique_ptr<heuristics::Heuristic> heuristic = heuristics::make_heuristic(kind, task);
-    AStarSearch search(task, *heuristic, limits);
+    std::unique_ptr<StateEstimates> estimates;
+    if (inherit_cuts && kind == heuristics::HeuristicKind::LMCUT &&
+        !heuristics::lmcut_is_hmax(task))
+        estimates = std::make_unique<InheritedLmCut>(task);
+    else
+        estimates = std::make_unique<HeuristicEstimates>(*heuristic);
+    AStarSearch search(task, *estimates, limits);
     while (search.step() == SearchStatus::IN_PROGRESS) {
     }
     return search.result();

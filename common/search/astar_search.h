@@ -25,6 +25,7 @@
 #include "heuristics/heuristic.h"
 #include "search/open_list.h"
 #include "search/per_state_information.h"
+#include "search/state_estimates.h"
 #include "search/state_registry.h"
 #include "search/successor_generator.h"
 
@@ -81,8 +82,10 @@ class AStarSearch {
 public:
     static constexpr int MEMORY_CHECK_INTERVAL = 64;
 
-    // Keeps references to `task` and `heuristic`, which must outlive the search.
+    // Keeps references to `task` and `heuristic` (`estimates`), which must outlive the search.
     AStarSearch(const ground::GroundTask &task, heuristics::Heuristic &heuristic,
+                SearchLimits limits = {});
+    AStarSearch(const ground::GroundTask &task, StateEstimates &estimates,
                 SearchLimits limits = {});
 
     // Expands one state (the first call evaluates the initial state, then expands it).
@@ -95,6 +98,9 @@ public:
     std::size_t memory_bytes() const;
 
 private:
+    AStarSearch(const ground::GroundTask &task, std::unique_ptr<StateEstimates> own,
+                SearchLimits limits);
+
     enum class NodeStatus : std::uint8_t { NEW, OPEN, CLOSED, DEAD_END };
     // 16 bytes per state; the status and the secondary g live in their own arrays so that
     // tasks without secondary costs do not pay for them.
@@ -116,7 +122,8 @@ private:
     void extract_plan(StateID goal);
 
     const ground::GroundTask &task_;
-    heuristics::Heuristic &heuristic_;
+    std::unique_ptr<StateEstimates> own_estimates_; // of a plain heuristic
+    StateEstimates &estimates_;
     SearchLimits limits_;
     std::chrono::steady_clock::time_point start_;
     bool secondary_is_primary_ = false; // every operator's two costs are equal
@@ -135,8 +142,10 @@ private:
     int last_jump_f_ = -1;
 };
 
-// Runs A* with a fresh heuristic of `kind` to the end.
+// Runs A* with a fresh heuristic of `kind` to the end. `inherit_cuts`: LM-cut's estimates
+// inherited from the parent (inherited_lmcut.h) where `kind` is LMCUT: cheaper per state,
+// as admissible, but not LM-cut's values, so the search and its plan may differ.
 SearchResult astar(const ground::GroundTask &task, heuristics::HeuristicKind kind,
-                   const SearchLimits &limits = {});
+                   const SearchLimits &limits = {}, bool inherit_cuts = false);
 
 } // namespace envdesign::search

@@ -1,14 +1,14 @@
-// Inherited LM-cut (design/behaviour/inherited_lmcut.h, issue 24): the residual LM-cut, the
+// Inherited LM-cut (search/inherited_lmcut.h, issue 24): the residual LM-cut, the
 // estimates' admissibility against the true cost to the goal, and the optimal-plan graph
 // they prune being the one the blind search finds, on paper Blocksworld tasks.
 
-#include "design/behaviour/inherited_lmcut.h"
 #include "design/behaviour/optimal_plan_graph.h"
 #include "ground/grounder.h"
 #include "ground/simplify.h"
 #include "heuristics/make_heuristic.h"
 #include "pddl/parser.h"
 #include "planning/planner.h"
+#include "search/inherited_lmcut.h"
 #include "search/state_registry.h"
 #include "search/successor_generator.h"
 
@@ -86,7 +86,7 @@ TEST(InheritedLmCut, SuccessorEstimatesAreAdmissible) {
     search::StateRegistry registry(task);
     search::SuccessorGenerator successors(task);
     search::UnpackedState state(registry.codec()), next(registry.codec());
-    InheritedLmCut estimates(task);
+    search::InheritedLmCut estimates(task);
     search::StateID init = registry.insert_facts(task.initial_state).id;
     registry.unpack(init, state);
     int h0 = estimates.initial(init, state);
@@ -121,7 +121,7 @@ TEST(InheritedLmCut, GraphEqualsTheBlindSearchsFromFewerStates) {
         ASSERT_GT(cost, 0) << problem;
         auto blind = heuristics::make_heuristic(heuristics::HeuristicKind::BLIND, task);
         OptimalPlanGraph reference = optimal_plan_graph(task, cost, *blind, {});
-        InheritedLmCut estimates(task);
+        search::InheritedLmCut estimates(task);
         OptimalPlanGraph graph = optimal_plan_graph(task, cost, estimates, {});
         ASSERT_EQ(graph.status, OptimalPlanGraph::Status::SOLVED) << problem;
         EXPECT_GT(graph.num_nodes(), cost) << problem; // several optimal plans

@@ -41,6 +41,23 @@ TEST_P(AStarIpcTest, CostAndExpansionsMatchFastDownward) {
         << "expanded " << result.stats.expanded << ", FD " << ref.expansions;
 }
 
+// With LM-cut estimates inherited from the parent (inherited_lmcut.h): the same optimal
+// cost, by another search.
+TEST_P(AStarIpcTest, InheritedCutsFindTheSameOptimalCost) {
+    const Reference &ref = GetParam();
+    pddl::Domain domain = pddl::parse_domain_file(IPC_DIR + ref.domain + "/domain.pddl");
+    pddl::Problem problem =
+        pddl::parse_problem_file(IPC_DIR + ref.domain + "/" + ref.problem, domain);
+    ground::GroundTask task = ground::ground(domain, problem);
+    SearchResult result = astar(task, heuristics::HeuristicKind::LMCUT, {}, true);
+    ASSERT_EQ(result.status, SearchStatus::SOLVED);
+    EXPECT_EQ(result.cost, ref.cost);
+    long long cost = 0;
+    for (ground::OperatorId op : result.plan)
+        cost += task.operators[op].cost;
+    EXPECT_EQ(cost, ref.cost);
+}
+
 std::string instance_name(const ::testing::TestParamInfo<Reference> &info) {
     std::string name = info.param.domain + "_" + info.param.problem;
     for (char &c : name)

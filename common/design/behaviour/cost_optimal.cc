@@ -2,12 +2,12 @@
 
 #include "design/behaviour/behaviour.h"
 #include "design/behaviour/explicability.h"
-#include "design/behaviour/inherited_lmcut.h"
 #include "design/behaviour/optimal_plan_graph.h"
 #include "design/behaviour/worst_case.h"
 #include "ground/grounder.h"
 #include "ground/simplify.h"
 #include "heuristics/make_heuristic.h"
+#include "search/inherited_lmcut.h"
 
 #include <algorithm>
 #include <chrono>
@@ -40,11 +40,11 @@ GraphLimits limits_of(const planning::PlannerOptions &options, const Deadline &d
 }
 
 // Any admissible estimates give the same graph; with LM-cut, those inherited along the path
-// cost a fraction of LM-cut from scratch in every state (inherited_lmcut.h).
+// cost a fraction of LM-cut from scratch in every state (search/inherited_lmcut.h).
 OptimalPlanGraph plan_graph(const ground::GroundTask &task, long long optimal_cost,
                             const planning::PlannerOptions &options, const GraphLimits &limits) {
     if (options.heuristic == heuristics::HeuristicKind::LMCUT) {
-        InheritedLmCut estimates(task);
+        search::InheritedLmCut estimates(task);
         return optimal_plan_graph(task, optimal_cost, estimates, limits);
     }
     auto heuristic = heuristics::make_heuristic(options.heuristic, task);

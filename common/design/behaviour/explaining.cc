@@ -21,12 +21,17 @@ std::optional<TaskExplanation> nothing_to_tell(const TaskExplicability &t, doubl
 
 } // namespace
 
+PlanChoice robot_plan_choice(const Behaviour &behaviour) {
+    return behaviour.may_explain ? PlanChoice::PLANNERS : PlanChoice::ANY_OPTIMAL;
+}
+
 TaskExplicability evaluate_explaining(const ModelPair &models, const ObjectiveWeights &w,
                                       PlanCache &planner, const Deadline &deadline) {
     TaskExplicability t = evaluate_explicability(models, w.distance, planner, deadline);
     if (t.status == ExplicabilityStatus::LIMIT)
         return t;
-    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline);
+    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, planner, deadline,
+                                    PlanChoice::PLANNERS);
     if (robot.status == PlanStatus::LIMIT)
         return TaskExplicability{};
     if (robot.status == PlanStatus::UNSOLVABLE) {

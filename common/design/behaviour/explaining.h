@@ -19,6 +19,7 @@
 // chooses (choose_behaviour, objective.h: stored evaluations serve any weights and any
 // distribution).
 
+#include "design/behaviour/behaviour.h"
 #include "design/evaluation/plan_cache.h"
 #include "design/evaluation/task_evaluation.h"
 #include "design/model/configuration.h"
@@ -26,6 +27,11 @@
 #include "design/search/deadline.h"
 
 namespace envdesign::design {
+
+// Which of P_R's optimal plans the robot of `behaviour` follows where it does not act
+// explicably: the planner's (PLANNERS) for the explaining robot, which explains that very plan;
+// for the others, only c_R* counts (ANY_OPTIMAL).
+PlanChoice robot_plan_choice(const Behaviour &behaviour);
 
 // Both options: evaluate_explicability, and the robot's optimal plan with a minimal
 // explanation of it (t.explanation). LIMIT (an empty evaluation) if the deadline passed.

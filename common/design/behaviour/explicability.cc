@@ -64,13 +64,13 @@ std::optional<PlanOutcome> known_most_explicable(const ModelPair &models,
 } // namespace
 
 PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
-                        PlanCache &planner, const Deadline &deadline) {
+                        PlanCache &planner, const Deadline &deadline, PlanChoice choice) {
     return planner.solve_model(
         lifted_key(domain, problem),
         [&] {
             return ground::ground(domain, problem, nullptr, [&] { return deadline.expired(); });
         },
-        deadline);
+        deadline, choice);
 }
 
 double least_ie(Distance distance) { return distance == Distance::COST_DIFF ? 0.0 : 1.0; }

@@ -23,7 +23,8 @@ namespace envdesign::design {
 // The planner's answer for one lifted model: skips grounding when the model was seen
 // (PlanCache::solve_model with lifted_key.h).
 PlanOutcome solve_model(const pddl::Domain &domain, const pddl::Problem &problem,
-                        PlanCache &planner, const Deadline &deadline);
+                        PlanCache &planner, const Deadline &deadline,
+                        PlanChoice choice = PlanChoice::ANY_OPTIMAL);
 
 // IE from the two human costs.
 double inexplicability(double human_plan_cost, double human_optimal_cost, Distance distance);

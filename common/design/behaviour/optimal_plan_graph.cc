@@ -38,8 +38,8 @@ constexpr int UNKNOWN = -1;
 // Step 1 of the header: every state with g + h <= c*, expanded in g order. A plain struct:
 // steps 2 and 3 read what it found.
 struct ForwardSearch {
-    ForwardSearch(const ground::GroundTask &task, long long bound, GraphEstimates &estimates,
-                  const GraphLimits &limits)
+    ForwardSearch(const ground::GroundTask &task, long long bound,
+                  search::StateEstimates &estimates, const GraphLimits &limits)
         : task_(task), bound_(bound), estimates_(estimates), limits_(limits), registry_(task),
           successors_(task), state_(registry_.codec()), successor_(registry_.codec()) {}
 
@@ -68,7 +68,7 @@ struct ForwardSearch {
 
     const ground::GroundTask &task_;
     long long bound_;
-    GraphEstimates &estimates_;
+    search::StateEstimates &estimates_;
     const GraphLimits &limits_;
     search::StateRegistry registry_;
     search::SuccessorGenerator successors_;
@@ -134,26 +134,6 @@ struct ForwardSearch {
     }
 };
 
-// A heuristic of the planner as estimates: no path-dependent part.
-class HeuristicEstimates : public GraphEstimates {
-public:
-    explicit HeuristicEstimates(heuristics::Heuristic &h) : h_(h) {}
-    int initial(StateID, const search::UnpackedState &state) override { return of(state); }
-    int inherited(StateID, ground::OperatorId) const override { return 0; }
-    int successor(StateID, const search::UnpackedState &state, StateID,
-                  ground::OperatorId) override {
-        return of(state);
-    }
-    void expanded(StateID) override {}
-    std::size_t memory_bytes() const override { return 0; }
-
-private:
-    int of(const search::UnpackedState &state) {
-        return h_.compute(heuristics::StateView(state.facts, state.bits));
-    }
-    heuristics::Heuristic &h_;
-};
-
 // Step 2: h' by Dijkstra backwards over the kept edges, from the goal states expanded.
 std::vector<long long> backward_distances(const ForwardSearch &f) {
     std::size_t n = f.g_.size();
@@ -190,16 +170,14 @@ std::vector<long long> backward_distances(const ForwardSearch &f) {
 
 } // namespace
 
-GraphEstimates::~GraphEstimates() = default;
-
 OptimalPlanGraph optimal_plan_graph(const ground::GroundTask &task, long long optimal_cost,
                                     heuristics::Heuristic &heuristic, const GraphLimits &limits) {
-    HeuristicEstimates estimates(heuristic);
+    search::HeuristicEstimates estimates(heuristic);
     return optimal_plan_graph(task, optimal_cost, estimates, limits);
 }
 
 OptimalPlanGraph optimal_plan_graph(const ground::GroundTask &task, long long optimal_cost,
-                                    GraphEstimates &estimates, const GraphLimits &limits) {
+                                    search::StateEstimates &estimates, const GraphLimits &limits) {
     OptimalPlanGraph graph;
     graph.cost = optimal_cost;
     ForwardSearch forward(task, optimal_cost, estimates, limits);

@@ -26,6 +26,7 @@
 #include "ground/ground_task.h"
 #include "heuristics/heuristic.h"
 #include "search/state_codec.h"
+#include "search/state_estimates.h"
 #include "search/state_registry.h"
 
 #include <cstddef>
@@ -59,32 +60,14 @@ struct GraphLimits {
     std::function<bool()> stop;         // checked between expansions; true: give up (LIMIT)
 };
 
-// Lower bounds on h* that step 1 prunes with. Any admissible bounds give the same graph
-// (the argument above needs no more), so they may depend on the path a state was reached
-// by: a state's estimate is computed once, from the first edge that needs it.
-class GraphEstimates {
-public:
-    virtual ~GraphEstimates();
-    // h of the initial state, registered as `id`; DEAD_END if no goal is reachable.
-    virtual int initial(search::StateID id, const search::UnpackedState &state) = 0;
-    // A bound on h* of parent's successor by `op` that costs no search (0 if none known).
-    // Called only while `parent` is being expanded.
-    virtual int inherited(search::StateID parent, ground::OperatorId op) const = 0;
-    // h of `child` (DEAD_END: none), first needed on the edge from `parent` by `op`.
-    virtual int successor(search::StateID child, const search::UnpackedState &state,
-                          search::StateID parent, ground::OperatorId op) = 0;
-    // `parent` is expanded: what inherited() needed of it may go.
-    virtual void expanded(search::StateID parent) = 0;
-    virtual std::size_t memory_bytes() const = 0;
-};
-
 // The optimal-plan graph of `task`, whose optimal cost is `optimal_cost` (solved already,
-// e.g. by the planner). `heuristic` (`estimates`) must be admissible for `task`. LIMIT when
+// e.g. by the planner). `heuristic` (`estimates`, search/state_estimates.h: they may depend
+// on the path a state was reached by) must be admissible for `task`. LIMIT when
 // the memory limit or `stop` cut it short. Throws std::logic_error if no plan of cost
 // `optimal_cost` exists (the cost given was not the task's optimum).
 OptimalPlanGraph optimal_plan_graph(const ground::GroundTask &task, long long optimal_cost,
                                     heuristics::Heuristic &heuristic, const GraphLimits &limits);
 OptimalPlanGraph optimal_plan_graph(const ground::GroundTask &task, long long optimal_cost,
-                                    GraphEstimates &estimates, const GraphLimits &limits);
+                                    search::StateEstimates &estimates, const GraphLimits &limits);
 
 } // namespace envdesign::design

@@ -2,6 +2,7 @@
 
 #include "design/behaviour/behaviour.h"
 #include "design/behaviour/evaluate_task.h"
+#include "design/behaviour/explaining.h"
 #include "design/behaviour/explicability.h"
 #include "design/evaluation/dispatcher.h"
 #include "design/reconciliation/explanation_floor.h"
@@ -52,7 +53,9 @@ TaskExplicability LocalEvaluator::evaluate_task(const Configuration &configurati
 std::optional<double> LocalEvaluator::robot_cost_bound(const Configuration &configuration, int task,
                                                        const Deadline &deadline) {
     ModelPair models = configured_models(problem_, configuration, task);
-    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, cache_, deadline);
+    // The plan the evaluation of the explaining robot asks for: then that is a cache hit.
+    PlanOutcome robot = solve_model(models.robot_domain, models.robot_problem, cache_, deadline,
+                                    robot_plan_choice(behaviour_of(problem_.weights.behaviour)));
     if (robot.status == PlanStatus::SOLVED)
         return static_cast<double>(robot.cost);
     if (robot.status == PlanStatus::UNSOLVABLE)

@@ -7,25 +7,26 @@
 
 namespace envdesign::design {
 
-PlanOutcome PlanCache::solve(const ground::GroundTask &task, const Deadline &deadline) {
+PlanOutcome PlanCache::solve(const ground::GroundTask &task, const Deadline &deadline,
+                             PlanChoice choice) {
     ground::GroundTask canonical = canonicalize(task);
-    return memoized(answers_, key_of(canonical), false,
-                    [&] { return run_planner(canonical, deadline); });
+    return memoized(answers_, {key_of(canonical), choice}, false,
+                    [&] { return run_planner(canonical, deadline, choice); });
 }
 
 PlanOutcome PlanCache::solve_model(const TaskKey &lifted,
                                    const std::function<ground::GroundTask()> &ground,
-                                   const Deadline &deadline) {
-    return memoized(model_answers_, lifted, true, [&] {
+                                   const Deadline &deadline, PlanChoice choice) {
+    return memoized(model_answers_, {lifted, choice}, true, [&] {
         try {
-            return solve(ground(), deadline);
+            return solve(ground(), deadline, choice);
         } catch (const ground::GroundingStopped &) {
             return PlanOutcome{}; // LIMIT, and not kept
         }
     });
 }
 
-PlanOutcome PlanCache::memoized(Answers &answers, const TaskKey &key, bool lifted,
+PlanOutcome PlanCache::memoized(Answers &answers, const Key &key, bool lifted,
                                 const std::function<PlanOutcome()> &compute) {
     std::promise<PlanOutcome> promise;
     std::shared_future<PlanOutcome> answer;
@@ -87,9 +88,11 @@ CacheCounters PlanCache::counters() const {
     return counters_;
 }
 
-PlanOutcome PlanCache::run_planner(const ground::GroundTask &canonical, const Deadline &deadline) {
+PlanOutcome PlanCache::run_planner(const ground::GroundTask &canonical, const Deadline &deadline,
+                                   PlanChoice choice) {
     auto start = std::chrono::steady_clock::now();
     planning::PlannerOptions options = options_;
+    options.inherit_cuts = choice == PlanChoice::ANY_OPTIMAL;
     if (deadline.stop_flag())
         options.limits.stop = deadline.stop_flag();
     if (deadline.limited()) {

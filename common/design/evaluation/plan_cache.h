@@ -22,11 +22,20 @@
 #include <map>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace envdesign::design {
 
 enum class PlanStatus { SOLVED, UNSOLVABLE, LIMIT };
+
+// Which optimal plan a caller needs. ANY_OPTIMAL: the one the fastest search finds (A* with
+// LM-cut estimates inherited along the path, search/inherited_lmcut.h), the same for a task
+// whoever asks: for answers that are costs, or any optimal plan. PLANNERS: the one the
+// planner finds (`envdesign plan`, LM-cut in every state), where the plan itself decides a
+// value: the explaining robot explains its optimal plan, and another one may need another
+// explanation. Both are kept apart, so each asks its own search whatever ran before.
+enum class PlanChoice { ANY_OPTIMAL, PLANNERS };
 
 struct PlanOutcome {
     PlanStatus status = PlanStatus::LIMIT;
@@ -48,13 +57,14 @@ public:
 
     // An optimal plan of `task` (primary cost, then secondary cost), or a proof that there
     // is none, or LIMIT when `deadline` passed first.
-    PlanOutcome solve(const ground::GroundTask &task, const Deadline &deadline);
+    PlanOutcome solve(const ground::GroundTask &task, const Deadline &deadline,
+                      PlanChoice choice = PlanChoice::ANY_OPTIMAL);
 
     // The answer for a lifted model whose content address is `lifted`; calls `ground` and
     // solve() only when no model with that address was seen.
     PlanOutcome solve_model(const TaskKey &lifted,
                             const std::function<ground::GroundTask()> &ground,
-                            const Deadline &deadline);
+                            const Deadline &deadline, PlanChoice choice = PlanChoice::ANY_OPTIMAL);
 
     CacheCounters counters() const;
     const planning::PlannerOptions &options() const { return options_; }
@@ -70,18 +80,20 @@ public:
     static constexpr int kMaxCheaperPlans = 4096;
 
 private:
-    using Answers = std::map<TaskKey, std::shared_future<PlanOutcome>>;
+    using Key = std::pair<TaskKey, PlanChoice>;
+    using Answers = std::map<Key, std::shared_future<PlanOutcome>>;
 
     // The answer under `key` in `answers`, computed by `compute` on a miss; `lifted` says
     // which counters a hit and a miss move.
-    PlanOutcome memoized(Answers &answers, const TaskKey &key, bool lifted,
+    PlanOutcome memoized(Answers &answers, const Key &key, bool lifted,
                          const std::function<PlanOutcome()> &compute);
-    PlanOutcome run_planner(const ground::GroundTask &canonical, const Deadline &deadline);
+    PlanOutcome run_planner(const ground::GroundTask &canonical, const Deadline &deadline,
+                            PlanChoice choice);
 
     planning::PlannerOptions options_;
     mutable std::mutex mutex_;
-    Answers answers_;       // by ground task
-    Answers model_answers_; // by lifted model
+    Answers answers_;       // by ground task and choice
+    Answers model_answers_; // by lifted model and choice
     CacheCounters counters_;
     std::map<std::vector<std::string>, std::vector<std::vector<std::string>>> cheaper_plans_;
     int cheaper_plans_kept_ = 0;

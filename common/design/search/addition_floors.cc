@@ -139,6 +139,7 @@ constexpr std::size_t EXPLORED_STATES = 100000;
 // LM-cut's fewer expansions repay its cost per state.
 planning::PlannerOptions options_for(const Deadline &deadline, double cap_s = 0) {
     planning::PlannerOptions options;
+    options.inherit_cuts = true; // costs alone: any optimal plan
     options.limits.stop = deadline.stop_flag();
     if (deadline.limited())
         options.limits.time_limit_s = std::max(1e-3, deadline.remaining_seconds());

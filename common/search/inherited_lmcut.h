@@ -1,7 +1,8 @@
 #pragma once
-// LM-cut estimates for the optimal-plan graph's forward search (optimal_plan_graph.h) that
-// a successor inherits from its parent (incremental LM-cut, Pommerening and Helmert, ICAPS
-// 2013; issue 24: the graph's LM-cut calls were half of a COST_OPTIMAL Blocksworld run).
+// LM-cut estimates that a successor inherits from its parent (incremental LM-cut,
+// Pommerening and Helmert, ICAPS 2013), for the A* (astar_search.h) and the optimal-plan
+// graph's forward search (design/behaviour/optimal_plan_graph.h). Issue 24: LM-cut was
+// nearly all of the design engine's time.
 //
 // LM-cut's cuts L of a state s, with costs c(L), are disjunctive action landmarks and a
 // cost partition: every operator o has sum_{L containing o} c(L) <= cost(o). Every plan
@@ -13,32 +14,35 @@
 // searched for: usually one or two cuts instead of one per unit of h. inherited() is the
 // first part alone, which prunes some successors without any search.
 //
+// A state's cuts are kept from its estimate until it is expanded; a state expanded again
+// (reopened) passes none on, and its successors get plain LM-cut.
+//
 // Example:
 //   InheritedLmCut estimates(task);
-//   OptimalPlanGraph graph = optimal_plan_graph(task, c_star, estimates, limits);
+//   AStarSearch search(task, estimates, limits);
 
-#include "design/behaviour/optimal_plan_graph.h"
 #include "heuristics/lmcut_landmarks.h"
+#include "search/state_estimates.h"
 
 #include <cstddef>
 #include <span>
 #include <vector>
 
-namespace envdesign::design {
+namespace envdesign::search {
 
-class InheritedLmCut : public GraphEstimates {
+class InheritedLmCut : public StateEstimates {
 public:
     explicit InheritedLmCut(const ground::GroundTask &task);
 
-    int initial(search::StateID id, const search::UnpackedState &state) override;
-    int inherited(search::StateID parent, ground::OperatorId op) const override;
-    int successor(search::StateID child, const search::UnpackedState &state, search::StateID parent,
+    int initial(StateID id, const UnpackedState &state) override;
+    int inherited(StateID parent, ground::OperatorId op) const override;
+    int successor(StateID child, const UnpackedState &state, StateID parent,
                   ground::OperatorId op) override;
-    void expanded(search::StateID parent) override;
+    void expanded(StateID parent) override;
     std::size_t memory_bytes() const override;
 
     // The cuts a state holds (until it is expanded), each as (cost, operators sorted).
-    std::vector<std::pair<int, std::vector<ground::OperatorId>>> cuts_of(search::StateID id) const;
+    std::vector<std::pair<int, std::vector<ground::OperatorId>>> cuts_of(StateID id) const;
 
 private:
     struct Cut {
@@ -49,10 +53,10 @@ private:
 
     bool contains(const Cut &cut, ground::OperatorId op) const;
     // h of `state` on the costs spent_ leaves; its cuts are appended to `found`.
-    int residual(const search::UnpackedState &state, std::vector<int> &found);
+    int residual(const UnpackedState &state, std::vector<int> &found);
     // Adds (sign 1) or takes back (-1) the costs of `cuts` in spent_.
     void spend(const std::vector<int> &cuts, int sign);
-    void keep(search::StateID id, std::vector<int> cuts);
+    void keep(StateID id, std::vector<int> cuts);
 
     heuristics::LmCutLandmarks lmcut_;
     std::vector<Cut> cuts_;                     // every cut found, shared by the states
@@ -62,4 +66,4 @@ private:
     std::size_t cut_entries_ = 0;               // in state_cuts_, for memory_bytes()
 };
 
-} // namespace envdesign::design
+} // namespace envdesign::search

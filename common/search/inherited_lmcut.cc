@@ -1,8 +1,8 @@
-#include "design/behaviour/inherited_lmcut.h"
+#include "search/inherited_lmcut.h"
 
 #include <algorithm>
 
-namespace envdesign::design {
+namespace envdesign::search {
 
 InheritedLmCut::InheritedLmCut(const ground::GroundTask &task)
     : lmcut_(task), spent_(task.num_operators(), 0) {}
@@ -11,7 +11,7 @@ bool InheritedLmCut::contains(const Cut &cut, ground::OperatorId op) const {
     return std::binary_search(operators_.begin() + cut.begin, operators_.begin() + cut.end, op);
 }
 
-int InheritedLmCut::residual(const search::UnpackedState &state, std::vector<int> &found) {
+int InheritedLmCut::residual(const UnpackedState &state, std::vector<int> &found) {
     return lmcut_.compute_residual(
         state.facts, spent_, [&](std::span<const ground::OperatorId> ops, int cost) {
             int begin = static_cast<int>(operators_.size());
@@ -28,14 +28,14 @@ void InheritedLmCut::spend(const std::vector<int> &cuts, int sign) {
             spent_[operators_[k]] += sign * cuts_[c].cost;
 }
 
-void InheritedLmCut::keep(search::StateID id, std::vector<int> cuts) {
+void InheritedLmCut::keep(StateID id, std::vector<int> cuts) {
     if (id >= state_cuts_.size())
         state_cuts_.resize(id + 1);
     cut_entries_ += cuts.size();
     state_cuts_[id] = std::move(cuts);
 }
 
-int InheritedLmCut::initial(search::StateID id, const search::UnpackedState &state) {
+int InheritedLmCut::initial(StateID id, const UnpackedState &state) {
     std::vector<int> found;
     int h = residual(state, found); // nothing spent yet: plain LM-cut
     if (h != heuristics::DEAD_END)
@@ -43,7 +43,7 @@ int InheritedLmCut::initial(search::StateID id, const search::UnpackedState &sta
     return h;
 }
 
-int InheritedLmCut::inherited(search::StateID parent, ground::OperatorId op) const {
+int InheritedLmCut::inherited(StateID parent, ground::OperatorId op) const {
     if (parent >= state_cuts_.size())
         return 0;
     int sum = 0;
@@ -53,8 +53,8 @@ int InheritedLmCut::inherited(search::StateID parent, ground::OperatorId op) con
     return sum;
 }
 
-int InheritedLmCut::successor(search::StateID child, const search::UnpackedState &state,
-                              search::StateID parent, ground::OperatorId op) {
+int InheritedLmCut::successor(StateID child, const UnpackedState &state, StateID parent,
+                              ground::OperatorId op) {
     std::vector<int> kept;
     int sum = 0;
     if (parent < state_cuts_.size())
@@ -74,7 +74,7 @@ int InheritedLmCut::successor(search::StateID child, const search::UnpackedState
     return h + sum;
 }
 
-void InheritedLmCut::expanded(search::StateID parent) {
+void InheritedLmCut::expanded(StateID parent) {
     if (parent >= state_cuts_.size())
         return;
     cut_entries_ -= state_cuts_[parent].size();
@@ -88,7 +88,7 @@ std::size_t InheritedLmCut::memory_bytes() const {
 }
 
 std::vector<std::pair<int, std::vector<ground::OperatorId>>>
-InheritedLmCut::cuts_of(search::StateID id) const {
+InheritedLmCut::cuts_of(StateID id) const {
     std::vector<std::pair<int, std::vector<ground::OperatorId>>> out;
     if (id < state_cuts_.size())
         for (int c : state_cuts_[id])
@@ -98,4 +98,4 @@ InheritedLmCut::cuts_of(search::StateID id) const {
     return out;
 }
 
-} // namespace envdesign::design
+} // namespace envdesign::search
