@@ -7,8 +7,10 @@
 // equal keys, which is Fast Downward's astar tie-breaking [sum(g, h), h] when secondary
 // costs are all 0. Where every operator's secondary cost equals its primary cost, each plan's
 // two costs are equal and the secondary is not searched: the order is (f, h). States are
-// evaluated when generated, dead ends (h = DEAD_END) are pruned, and closed states are
-// reopened when reached more cheaply (LM-cut is admissible but not consistent). A state
+// evaluated when first generated, by a heuristic or by estimates that know the edge that
+// reached them (state_estimates.h: LM-cut inherited from the parent); dead ends
+// (h = DEAD_END) are pruned, and closed states are reopened when reached more cheaply
+// (LM-cut is admissible but not consistent; the reopened state keeps its estimate). A state
 // counts as expanded when it is taken from the open list and not already closed, the goal
 // state included (as in FD, whose counts we match).
 //

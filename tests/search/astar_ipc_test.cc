@@ -28,12 +28,16 @@ const std::string IPC_DIR = std::string(ENVDESIGN_SHARED_DIR) + "/benchmarks/ipc
 
 class AStarIpcTest : public ::testing::TestWithParam<Reference> {};
 
-TEST_P(AStarIpcTest, CostAndExpansionsMatchFastDownward) {
-    const Reference &ref = GetParam();
+ground::GroundTask ipc_task(const Reference &ref) {
     pddl::Domain domain = pddl::parse_domain_file(IPC_DIR + ref.domain + "/domain.pddl");
     pddl::Problem problem =
         pddl::parse_problem_file(IPC_DIR + ref.domain + "/" + ref.problem, domain);
-    ground::GroundTask task = ground::ground(domain, problem);
+    return ground::ground(domain, problem);
+}
+
+TEST_P(AStarIpcTest, CostAndExpansionsMatchFastDownward) {
+    const Reference &ref = GetParam();
+    ground::GroundTask task = ipc_task(ref);
     SearchResult result = astar(task, heuristics::HeuristicKind::LMCUT);
     ASSERT_EQ(result.status, SearchStatus::SOLVED);
     EXPECT_EQ(result.cost, ref.cost);
@@ -45,10 +49,7 @@ TEST_P(AStarIpcTest, CostAndExpansionsMatchFastDownward) {
 // cost, by another search.
 TEST_P(AStarIpcTest, InheritedCutsFindTheSameOptimalCost) {
     const Reference &ref = GetParam();
-    pddl::Domain domain = pddl::parse_domain_file(IPC_DIR + ref.domain + "/domain.pddl");
-    pddl::Problem problem =
-        pddl::parse_problem_file(IPC_DIR + ref.domain + "/" + ref.problem, domain);
-    ground::GroundTask task = ground::ground(domain, problem);
+    ground::GroundTask task = ipc_task(ref);
     SearchResult result = astar(task, heuristics::HeuristicKind::LMCUT, {}, true);
     ASSERT_EQ(result.status, SearchStatus::SOLVED);
     EXPECT_EQ(result.cost, ref.cost);

@@ -51,9 +51,11 @@ void add_plan(const pddl::Domain &domain, const std::vector<std::string> &plan, 
     }
 }
 
+// The planner's plan (PLANNERS): what is relevant depends on the actions the plan takes, and
+// the pruning keeps the designs it chose with the planner's plans.
 void add_optimal_plan(const pddl::Domain &domain, const pddl::Problem &problem, PlanCache &planner,
                       const Deadline &deadline, Touched &touched) {
-    PlanOutcome outcome = solve_model(domain, problem, planner, deadline);
+    PlanOutcome outcome = solve_model(domain, problem, planner, deadline, PlanChoice::PLANNERS);
     if (outcome.status == PlanStatus::SOLVED)
         add_plan(domain, outcome.plan, touched);
 }
