@@ -204,13 +204,15 @@ SearchResult AStarSearch::result() const {
 
 SearchResult astar(const ground::GroundTask &task, heuristics::HeuristicKind kind,
                    const SearchLimits &limits, bool inherit_cuts) {
-    std::unique_ptr<heuristics::Heuristic> heuristic = heuristics::make_heuristic(kind, task);
+    std::unique_ptr<heuristics::Heuristic> heuristic;
     std::unique_ptr<StateEstimates> estimates;
     if (inherit_cuts && kind == heuristics::HeuristicKind::LMCUT &&
-        !heuristics::lmcut_is_hmax(task))
+        !heuristics::lmcut_is_hmax(task)) {
         estimates = std::make_unique<InheritedLmCut>(task);
-    else
+    } else {
+        heuristic = heuristics::make_heuristic(kind, task);
         estimates = std::make_unique<HeuristicEstimates>(*heuristic);
+    }
     AStarSearch search(task, *estimates, limits);
     while (search.step() == SearchStatus::IN_PROGRESS) {
     }
