@@ -165,7 +165,7 @@ void AStarSearch::generate(StateID parent_id, ground::OperatorId op) {
     if (std::pair(candidate.g, candidate_secondary) < std::pair(node.g, secondary_g(succ.id))) {
         if (status == NodeStatus::CLOSED)
             ++result_.stats.reopened;
-        candidate.h = node.h; // cached: heuristics here are not path-dependent
+        candidate.h = node.h; // a state's estimate is computed once, whatever the path
         open(succ.id, candidate, candidate_secondary);
     }
 }

@@ -12,26 +12,26 @@ bool InheritedLmCut::contains(const Cut &cut, ground::OperatorId op) const {
 }
 
 int InheritedLmCut::residual(const UnpackedState &state, std::vector<int> &found) {
-    return lmcut_.compute_residual(
-        state.facts, spent_, [&](std::span<const ground::OperatorId> ops, int cost) {
-            int begin = static_cast<int>(operators_.size());
-            operators_.insert(operators_.end(), ops.begin(), ops.end());
-            std::sort(operators_.begin() + begin, operators_.end());
-            found.push_back(static_cast<int>(cuts_.size()));
-            cuts_.push_back({cost, begin, static_cast<int>(operators_.size())});
-        });
+    return lmcut_.compute_residual(state.facts, spent_,
+                                   [&](std::span<const ground::OperatorId> ops, int cost) {
+                                       std::size_t begin = operators_.size();
+                                       operators_.insert(operators_.end(), ops.begin(), ops.end());
+                                       std::sort(operators_.begin() + begin, operators_.end());
+                                       found.push_back(static_cast<int>(cuts_.size()));
+                                       cuts_.push_back({cost, begin, operators_.size()});
+                                   });
 }
 
 void InheritedLmCut::spend(const std::vector<int> &cuts, int sign) {
     for (int c : cuts)
-        for (int k = cuts_[c].begin; k < cuts_[c].end; ++k)
+        for (std::size_t k = cuts_[c].begin; k < cuts_[c].end; ++k)
             spent_[operators_[k]] += sign * cuts_[c].cost;
 }
 
 void InheritedLmCut::keep(StateID id, std::vector<int> cuts) {
     if (id >= state_cuts_.size())
         state_cuts_.resize(id + 1);
-    cut_entries_ += cuts.size();
+    cut_entries_ += cuts.capacity();
     state_cuts_[id] = std::move(cuts);
 }
 
@@ -77,7 +77,7 @@ int InheritedLmCut::successor(StateID child, const UnpackedState &state, StateID
 void InheritedLmCut::expanded(StateID parent) {
     if (parent >= state_cuts_.size())
         return;
-    cut_entries_ -= state_cuts_[parent].size();
+    cut_entries_ -= state_cuts_[parent].capacity();
     std::vector<int>().swap(state_cuts_[parent]);
 }
 

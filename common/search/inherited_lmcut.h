@@ -47,8 +47,8 @@ public:
 private:
     struct Cut {
         int cost;
-        int begin; // its operators: operators_[begin .. end), ascending
-        int end;
+        std::size_t begin; // its operators: operators_[begin .. end), ascending
+        std::size_t end;
     };
 
     bool contains(const Cut &cut, ground::OperatorId op) const;

@@ -50,7 +50,8 @@ TEST(ExplanationFloor, EqualsEverySubsetAndNeverExceedsTheExplanation) {
         GeneratedPair g = generate_pair(seed);
         ModelPair m = models_of(g);
         PlanCache planner(planning::PlannerOptions{});
-        PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
+        PlanOutcome robot =
+            solve_model(m.robot_domain, m.robot_problem, planner, Deadline{}, PlanChoice::PLANNERS);
         PlanOutcome human = solve_model(m.human_domain, m.human_problem, planner, Deadline{});
         if (robot.status != PlanStatus::SOLVED || human.status != PlanStatus::SOLVED)
             continue;
@@ -90,7 +91,8 @@ TEST(ExplanationFloor, EqualsEverySubsetAndNeverExceedsTheExplanation) {
 TEST(ExplanationFloor, PaperBlocksworldNeedsTheCoupledPair) {
     ModelPair m = testing::paper_blocksworld("20/init-7-1-goal-7-0.pddl");
     PlanCache planner(planning::PlannerOptions{});
-    PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
+    PlanOutcome robot =
+        solve_model(m.robot_domain, m.robot_problem, planner, Deadline{}, PlanChoice::PLANNERS);
     PlanOutcome human = solve_model(m.human_domain, m.human_problem, planner, Deadline{});
     ASSERT_EQ(robot.cost, 22);
     ASSERT_EQ(human.cost, 14);

@@ -46,7 +46,8 @@ TEST(MinimalExplanation, AgreesWithEverySubsetOnSeededTasks) {
         GeneratedPair g = generate_pair(seed);
         ModelPair m = models_of(g);
         PlanCache planner(planning::PlannerOptions{});
-        PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
+        PlanOutcome robot =
+            solve_model(m.robot_domain, m.robot_problem, planner, Deadline{}, PlanChoice::PLANNERS);
         if (robot.status != PlanStatus::SOLVED)
             continue;
         std::vector<ModelDifference> all = model_differences(m, false);
@@ -114,7 +115,8 @@ TEST(MinimalExplanation, HittingSetsDoNotDependOnPlansMetBefore) {
         SCOPED_TRACE("seed " + std::to_string(seed));
         ModelPair m = models_of(generate_pair(seed));
         PlanCache fresh(planning::PlannerOptions{}), shared(planning::PlannerOptions{});
-        PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, fresh, Deadline{});
+        PlanOutcome robot =
+            solve_model(m.robot_domain, m.robot_problem, fresh, Deadline{}, PlanChoice::PLANNERS);
         if (robot.status != PlanStatus::SOLVED)
             continue;
         ExplanationSearch alone = minimal_explanation(m, robot.plan, fresh, Deadline{});
@@ -150,7 +152,8 @@ TEST(MinimalExplanation, CheckAgreesWithEnumeratedHumanOptimum) {
         GeneratedPair g = generate_pair(seed);
         ModelPair m = models_of(g);
         PlanCache planner(planning::PlannerOptions{});
-        PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
+        PlanOutcome robot =
+            solve_model(m.robot_domain, m.robot_problem, planner, Deadline{}, PlanChoice::PLANNERS);
         if (robot.status != PlanStatus::SOLVED || robot.plan.size() > 4)
             continue;
         ExplanationSearch search = minimal_explanation(m, robot.plan, planner, Deadline{});
@@ -194,7 +197,8 @@ std::vector<std::string> texts(const ExplanationSearch &s) {
 TEST(MinimalExplanation, RestaurantNeedsTwoClosedPassages) {
     ModelPair m = restaurant("serve-g1");
     PlanCache planner(planning::PlannerOptions{});
-    PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
+    PlanOutcome robot =
+        solve_model(m.robot_domain, m.robot_problem, planner, Deadline{}, PlanChoice::PLANNERS);
     ASSERT_EQ(robot.status, PlanStatus::SOLVED);
     EXPECT_EQ(robot.cost, 7);
     ExplanationSearch s = minimal_explanation(m, robot.plan, planner, Deadline{});
@@ -226,7 +230,8 @@ TEST(MinimalExplanation, PaperBlocksworldAgreesWithEverySubset) {
         m.robot_problem = pddl::parse_problem_file(dir + "01/" + task + ".pddl", m.robot_domain);
         m.human_problem = pddl::parse_problem_file(dir + "01/" + task + ".pddl", m.human_domain);
         PlanCache planner(planning::PlannerOptions{});
-        PlanOutcome robot = solve_model(m.robot_domain, m.robot_problem, planner, Deadline{});
+        PlanOutcome robot =
+            solve_model(m.robot_domain, m.robot_problem, planner, Deadline{}, PlanChoice::PLANNERS);
         ASSERT_EQ(robot.status, PlanStatus::SOLVED);
         std::vector<ModelDifference> all = model_differences(m, false);
         EXPECT_EQ(all.size(), 4u);

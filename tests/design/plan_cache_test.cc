@@ -1,7 +1,9 @@
 // The plan cache's two choices of plan (plan_cache.h): ANY_OPTIMAL is the A* with inherited
 // LM-cut, PLANNERS the planner's own A*; each choice answers with its own search's plan, in
-// whichever order they are asked, and both have the optimal cost.
+// whichever order they are asked, by ground task and by lifted model, and both have the
+// optimal cost.
 
+#include "design/behaviour/explicability.h"
 #include "design/evaluation/plan_cache.h"
 #include "design/model/ground_key.h"
 #include "ground/grounder.h"
@@ -53,6 +55,12 @@ TEST(PlanCache, EachChoiceOfPlanIsItsOwnSearchsWhicheverIsAskedFirst) {
             EXPECT_EQ(again.plan, a.plan);
             EXPECT_EQ(cache.counters().planner_runs, 2);
             EXPECT_EQ(cache.counters().cache_hits, 1);
+            // The same through the lifted models, as the evaluations ask.
+            PlanCache by_model(planning::PlannerOptions{});
+            PlanOutcome m1 = solve_model(domain, problem, by_model, Deadline{}, first);
+            PlanOutcome m2 = solve_model(domain, problem, by_model, Deadline{}, second);
+            EXPECT_EQ((planners_first ? m1 : m2).plan, planners.plan);
+            EXPECT_EQ((planners_first ? m2 : m1).plan, inherited.plan);
         }
     }
     EXPECT_GT(tasks, 8);

@@ -11,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include <random>
-#include <set>
 
 namespace envdesign::search {
 namespace {
@@ -39,40 +38,31 @@ ground::GroundTask random_strips_task(std::mt19937 &rng, int facts, int operator
     return task;
 }
 
-// The plan's (primary, secondary) cost, or (-1, -1) if it is not applicable or misses the goal.
-std::pair<long long, long long> replayed_costs(const ground::GroundTask &task,
-                                               const std::vector<ground::OperatorId> &plan) {
-    std::set<ground::FactId> state(task.initial_state.begin(), task.initial_state.end());
-    long long cost = 0, secondary = 0;
-    for (ground::OperatorId op : plan) {
-        const ground::GroundOperator &o = task.operators[op];
-        for (ground::FactId p : o.pre)
-            if (!state.count(p))
-                return {-1, -1};
-        for (ground::FactId d : o.del)
-            state.erase(d);
-        state.insert(o.add.begin(), o.add.end());
-        cost += o.cost;
-        secondary += o.secondary_cost;
+// Counts the successors that inherit a cut, to show that the cuts are passed on.
+class CountingInheritedLmCut : public InheritedLmCut {
+public:
+    using InheritedLmCut::InheritedLmCut;
+    int successor(StateID child, const UnpackedState &state, StateID parent,
+                  ground::OperatorId op) override {
+        inheriting += inherited(parent, op) > 0;
+        return InheritedLmCut::successor(child, state, parent, op);
     }
-    for (ground::FactId g : task.goal)
-        if (!state.count(g))
-            return {-1, -1};
-    return {cost, secondary};
-}
+    int inheriting = 0;
+};
 
 TEST(InheritedLmCutSearch, RandomTasksAgreeWithBlindSearch) {
     std::mt19937 rng(24);
-    int solved = 0, unsolvable = 0;
+    int solved = 0, unsolvable = 0, inheriting = 0;
     for (int seed = 0; seed < 300; ++seed) {
         SCOPED_TRACE(seed);
         ground::GroundTask task = random_strips_task(rng, 10, 14);
         SearchResult blind = astar(task, heuristics::HeuristicKind::BLIND);
-        InheritedLmCut estimates(task);
+        CountingInheritedLmCut estimates(task);
         AStarSearch search(task, estimates);
         while (search.step() == SearchStatus::IN_PROGRESS) {
         }
         SearchResult inherited = search.result();
+        inheriting += estimates.inheriting;
         ASSERT_EQ(inherited.status, blind.status);
         if (blind.status == SearchStatus::FAILED) {
             ++unsolvable;
@@ -81,7 +71,7 @@ TEST(InheritedLmCutSearch, RandomTasksAgreeWithBlindSearch) {
         ++solved;
         EXPECT_EQ(inherited.cost, blind.cost);
         EXPECT_EQ(inherited.secondary_cost, blind.secondary_cost);
-        EXPECT_EQ(replayed_costs(task, inherited.plan),
+        EXPECT_EQ(testing::replayed_costs(task, inherited.plan),
                   std::make_pair(inherited.cost, inherited.secondary_cost));
         // The path through astar() with inherit_cuts takes the same search.
         SearchResult via_astar = astar(task, heuristics::HeuristicKind::LMCUT, {}, true);
@@ -89,6 +79,7 @@ TEST(InheritedLmCutSearch, RandomTasksAgreeWithBlindSearch) {
     }
     EXPECT_GT(solved, 50); // both kinds of task occur
     EXPECT_GT(unsolvable, 10);
+    EXPECT_GT(inheriting, 100); // successors did start from their parents' cuts
 }
 
 } // namespace

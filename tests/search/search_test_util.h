@@ -4,7 +4,9 @@
 #include "ground/ground_task.h"
 
 #include <algorithm>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace envdesign::search::testing {
@@ -66,6 +68,28 @@ inline ground::GroundTask grid_task(int n, std::vector<int> blocked = {}) {
     ground::GroundTask task = graph_task(n * n, edges, id(0, 0), id(n - 1, n - 1));
     task.has_action_costs = false;
     return task;
+}
+
+// The plan's (primary, secondary) cost, or (-1, -1) if it is not applicable or misses the goal.
+inline std::pair<long long, long long> replayed_costs(const ground::GroundTask &task,
+                                                      const std::vector<ground::OperatorId> &plan) {
+    std::set<ground::FactId> state(task.initial_state.begin(), task.initial_state.end());
+    long long cost = 0, secondary = 0;
+    for (ground::OperatorId op : plan) {
+        const ground::GroundOperator &o = task.operators[op];
+        for (ground::FactId p : o.pre)
+            if (!state.count(p))
+                return {-1, -1};
+        for (ground::FactId d : o.del)
+            state.erase(d);
+        state.insert(o.add.begin(), o.add.end());
+        cost += o.cost;
+        secondary += o.secondary_cost;
+    }
+    for (ground::FactId g : task.goal)
+        if (!state.count(g))
+            return {-1, -1};
+    return {cost, secondary};
 }
 
 } // namespace envdesign::search::testing

@@ -16,7 +16,9 @@
 namespace envdesign::design {
 
 // 2: evaluations carry the EXPLAINING option (TaskExplanation).
-inline constexpr int RECORD_VERSION = 2;
+// 3: their plans are the A*'s with inherited LM-cut (PlanChoice, plan_cache.h): among plans of
+//    equal cost, other plans than version 2's.
+inline constexpr int RECORD_VERSION = 3;
 
 enum class RecordKind { EXPLICABILITY, ROBOT_BOUND };
 

@@ -1,5 +1,6 @@
 #include "design/evaluation/unsolvable_tasks.h"
 
+#include "design/behaviour/explaining.h"
 #include "design/behaviour/explicability.h"
 #include "design/model/configuration.h"
 
@@ -13,8 +14,10 @@ std::vector<UnsolvableTask> unsolvable_tasks(const DesignProblem &problem,
         if (baseline[i].status != ExplicabilityStatus::INEXPLICABLE)
             continue;
         ModelPair models = base_models(problem, static_cast<int>(i));
+        // The choice the evaluations made: the robot's answer is then a cache hit.
         PlanOutcome robot =
-            solve_model(models.robot_domain, models.robot_problem, planner, deadline);
+            solve_model(models.robot_domain, models.robot_problem, planner, deadline,
+                        robot_plan_choice(behaviour_of(problem.weights.behaviour)));
         if (robot.status == PlanStatus::LIMIT)
             continue;
         UnsolvableTask u{static_cast<int>(i), UnsolvableReason::NO_PLAN_VALID_IN_BOTH};
